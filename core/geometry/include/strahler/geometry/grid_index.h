@@ -1,0 +1,101 @@
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "strahler/geometry/aabb.h"
+
+namespace strahler::geometry {
+
+/// Uniform grid of item ids over fixed bounds, for "what is near this box" queries in
+/// O(items nearby). Items are registered by their bounding box; a query may report an item
+/// more than once when it spans several cells.
+class GridIndex {
+public:
+  GridIndex() = default;
+  /// A grid covering `bounds` with square cells of side `cellSize` (> 0), at most
+  /// `maxCells` cells (the side grows to respect it).
+  GridIndex(const Aabb& bounds, double cellSize, std::size_t maxCells = 1u << 22) {
+    origin_ = bounds.min;
+    const Vec2 size = bounds.size();
+    cellSize_ = std::max(cellSize, 1e-9);
+    for (;;) {
+      nx_ = static_cast<int>(std::floor(size.x / cellSize_)) + 1;
+      ny_ = static_cast<int>(std::floor(size.y / cellSize_)) + 1;
+      if (static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) <= maxCells) break;
+      cellSize_ *= 1.5;
+    }
+    cells_.resize(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
+  }
+
+  /// Side of a cell.
+  double cellSize() const noexcept { return cellSize_; }
+
+  /// Registers `id` in every cell its box touches (clamped to the grid).
+  void insert(const Aabb& box, std::uint32_t id) {
+    forEachCell(box, [&](std::vector<std::uint32_t>& cell) { cell.push_back(id); });
+  }
+
+  /// Calls fn(id) for every id whose cells meet `box`; stops early if fn returns false.
+  template <class Fn> bool query(const Aabb& box, Fn&& fn) const {
+    int x0, y0, x1, y1;
+    cellRange(box, x0, y0, x1, y1);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x)
+        for (std::uint32_t id : cells_[index(x, y)])
+          if (!fn(id)) return false;
+    return true;
+  }
+
+  /// Calls fn(id) for the ids in the ring of cells at Chebyshev distance `r` around the
+  /// cell holding p (r = 0: that cell only). Returns false when the ring lies entirely
+  /// outside the grid, so expanding searches know when to stop.
+  template <class Fn> bool queryRing(Vec2 p, int r, Fn&& fn) const {
+    const int cx = cellX(p.x), cy = cellY(p.y);
+    bool any = false;
+    for (int y = cy - r; y <= cy + r; ++y) {
+      if (y < 0 || y >= ny_) continue;
+      const bool edgeRow = (y == cy - r || y == cy + r);
+      for (int x = cx - r; x <= cx + r; x += (edgeRow || r == 0) ? 1 : 2 * r) {
+        if (x < 0 || x >= nx_) continue;
+        any = true;
+        for (std::uint32_t id : cells_[index(x, y)]) fn(id);
+      }
+    }
+    return any;
+  }
+
+private:
+  int cellX(double x) const noexcept {
+    return std::clamp(static_cast<int>(std::floor((x - origin_.x) / cellSize_)), 0, nx_ - 1);
+  }
+  int cellY(double y) const noexcept {
+    return std::clamp(static_cast<int>(std::floor((y - origin_.y) / cellSize_)), 0, ny_ - 1);
+  }
+  std::size_t index(int x, int y) const noexcept {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) +
+           static_cast<std::size_t>(x);
+  }
+  void cellRange(const Aabb& box, int& x0, int& y0, int& x1, int& y1) const noexcept {
+    x0 = cellX(box.min.x);
+    y0 = cellY(box.min.y);
+    x1 = cellX(box.max.x);
+    y1 = cellY(box.max.y);
+  }
+  template <class Fn> void forEachCell(const Aabb& box, Fn&& fn) {
+    int x0, y0, x1, y1;
+    cellRange(box, x0, y0, x1, y1);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) fn(cells_[index(x, y)]);
+  }
+
+  Vec2 origin_{};
+  double cellSize_ = 1.0;
+  int nx_ = 1;
+  int ny_ = 1;
+  std::vector<std::vector<std::uint32_t>> cells_{1};
+};
+
+} // namespace strahler::geometry

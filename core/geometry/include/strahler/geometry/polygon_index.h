@@ -1,0 +1,68 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "strahler/geometry/grid_index.h"
+#include "strahler/geometry/polygon.h"
+
+namespace strahler::geometry {
+
+/// One edge of a polygon boundary, with the ring it belongs to.
+struct BoundarySegment {
+  Vec2 a;
+  Vec2 b;
+  std::uint32_t ring = 0; ///< Index into PolygonIndex::rings().
+};
+
+/// Result of a nearest-boundary query.
+struct BoundaryHit {
+  double distance = 0.0; ///< Distance to the boundary (the search limit if nothing closer).
+  Vec2 point{};          ///< Closest boundary point (undefined when nothing was found).
+  std::int64_t segment = -1; ///< Index of the closest segment, -1 when none within the limit.
+};
+
+/// Accelerated queries on a fixed multipolygon (land with lakes): point inside, distance to
+/// the boundary (coast and lake shores), segment clearance. Each query costs O(segments
+/// nearby), not O(all segments).
+class PolygonIndex {
+public:
+  /// Indexes `polygons`; cell size defaults to a few times the mean segment length.
+  explicit PolygonIndex(MultiPolygon polygons, double cellSize = 0.0);
+
+  /// The indexed polygons.
+  const MultiPolygon& polygons() const noexcept { return polygons_; }
+  /// All rings (outer and holes) in a flat list, in polygon order.
+  const std::vector<const Ring*>& rings() const noexcept { return rings_; }
+  /// True when ring `i` of rings() is a hole (a lake shore).
+  bool isHole(std::size_t i) const noexcept { return ringIsHole_[i]; }
+  /// Every boundary segment.
+  const std::vector<BoundarySegment>& segments() const noexcept { return segments_; }
+  /// Bounding box of the polygons.
+  const Aabb& bounds() const noexcept { return bounds_; }
+
+  /// True when p is inside the multipolygon (inside an outer ring, outside its holes).
+  bool contains(Vec2 p) const noexcept;
+  /// Nearest boundary point to p, searching no farther than maxDistance.
+  BoundaryHit nearestBoundary(Vec2 p, double maxDistance) const noexcept;
+  /// Distance from p to the boundary, capped at maxDistance.
+  double distanceToBoundary(Vec2 p, double maxDistance) const noexcept {
+    return nearestBoundary(p, maxDistance).distance;
+  }
+  /// True when some boundary segment comes closer than `clearance` to segment [a, b]
+  /// (clearance 0: when [a, b] touches or crosses the boundary).
+  bool segmentNearBoundary(Vec2 a, Vec2 b, double clearance) const noexcept;
+
+private:
+  MultiPolygon polygons_;
+  std::vector<const Ring*> rings_;
+  std::vector<bool> ringIsHole_;
+  std::vector<BoundarySegment> segments_;
+  Aabb bounds_;
+  GridIndex grid_;
+  // Horizontal bands for ray casting: segments whose y-range meets each band.
+  double bandHeight_ = 1.0;
+  std::vector<std::vector<std::uint32_t>> bands_;
+};
+
+} // namespace strahler::geometry
