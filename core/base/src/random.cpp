@@ -10,13 +10,16 @@ std::uint64_t splitmix64(std::uint64_t& x) noexcept {
   return z ^ (z >> 31);
 }
 
-std::uint64_t rotl(std::uint64_t x, int k) noexcept { return (x << k) | (x >> (64 - k)); }
+std::uint64_t rotl(std::uint64_t x, int k) noexcept {
+  return (x << k) | (x >> (64 - k));
+}
 
 } // namespace
 
 Rng::Rng(std::uint64_t seed, std::uint64_t stream) noexcept {
   std::uint64_t x = seed ^ (stream * 0xD1B54A32D192ED03ull);
-  for (auto& s : s_) s = splitmix64(x);
+  for (auto& s : s_)
+    s = splitmix64(x);
 }
 
 std::uint64_t Rng::nextU64() noexcept {

@@ -10,7 +10,8 @@ void StageTimer::start(std::string_view stage) {
 }
 
 void StageTimer::finish() {
-  if (!running_) return;
+  if (!running_)
+    return;
   stages_.back().seconds = std::chrono::duration<double>(Clock::now() - begin_).count();
   running_ = false;
 }

@@ -7,7 +7,8 @@ namespace strahler::geometry {
 Vec2 closestPointOnSegment(Vec2 p, Vec2 a, Vec2 b) noexcept {
   const Vec2 ab = b - a;
   const double len2 = lengthSquared(ab);
-  if (len2 == 0.0) return a;
+  if (len2 == 0.0)
+    return a;
   const double t = std::clamp(dot(p - a, ab) / len2, 0.0, 1.0);
   return a + ab * t;
 }
@@ -32,16 +33,22 @@ bool segmentsIntersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) noexcept {
   const int o2 = orientation(a, b, d);
   const int o3 = orientation(c, d, a);
   const int o4 = orientation(c, d, b);
-  if (o1 != o2 && o3 != o4) return true;
-  if (o1 == 0 && onSegment(a, b, c)) return true;
-  if (o2 == 0 && onSegment(a, b, d)) return true;
-  if (o3 == 0 && onSegment(c, d, a)) return true;
-  if (o4 == 0 && onSegment(c, d, b)) return true;
+  if (o1 != o2 && o3 != o4)
+    return true;
+  if (o1 == 0 && onSegment(a, b, c))
+    return true;
+  if (o2 == 0 && onSegment(a, b, d))
+    return true;
+  if (o3 == 0 && onSegment(c, d, a))
+    return true;
+  if (o4 == 0 && onSegment(c, d, b))
+    return true;
   return false;
 }
 
 double segmentSegmentDistance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) noexcept {
-  if (segmentsIntersect(a, b, c, d)) return 0.0;
+  if (segmentsIntersect(a, b, c, d))
+    return 0.0;
   return std::min({pointSegmentDistance(a, c, d), pointSegmentDistance(b, c, d),
                    pointSegmentDistance(c, a, b), pointSegmentDistance(d, a, b)});
 }

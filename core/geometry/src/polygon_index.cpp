@@ -28,7 +28,8 @@ PolygonIndex::PolygonIndex(MultiPolygon polygons, double cellSize)
       bounds_.add(a);
     }
   }
-  if (bounds_.empty()) bounds_.add(Vec2{0, 0});
+  if (bounds_.empty())
+    bounds_.add(Vec2{0, 0});
   const double meanLength = segments_.empty() ? 1.0 : totalLength / double(segments_.size());
   if (cellSize <= 0.0) {
     const Vec2 size = bounds_.size();
@@ -44,28 +45,30 @@ PolygonIndex::PolygonIndex(MultiPolygon polygons, double cellSize)
     grid_.insert(box, i);
   }
   bandHeight_ = grid_.cellSize();
-  const auto bandCount =
-      static_cast<std::size_t>(std::floor(bounds_.size().y / bandHeight_)) + 1;
+  const auto bandCount = static_cast<std::size_t>(std::floor(bounds_.size().y / bandHeight_)) + 1;
   bands_.resize(bandCount);
   for (std::uint32_t i = 0; i < segments_.size(); ++i) {
     const double y0 = std::min(segments_[i].a.y, segments_[i].b.y) - bounds_.min.y;
     const double y1 = std::max(segments_[i].a.y, segments_[i].b.y) - bounds_.min.y;
     const auto b0 = static_cast<std::size_t>(std::max(0.0, std::floor(y0 / bandHeight_)));
     const auto b1 = std::min(bandCount - 1, static_cast<std::size_t>(std::floor(y1 / bandHeight_)));
-    for (std::size_t b = b0; b <= b1; ++b) bands_[b].push_back(i);
+    for (std::size_t b = b0; b <= b1; ++b)
+      bands_[b].push_back(i);
   }
 }
 
 bool PolygonIndex::contains(Vec2 p) const noexcept {
-  if (!bounds_.contains(p)) return false;
-  const auto band = std::min(bands_.size() - 1,
-                             static_cast<std::size_t>((p.y - bounds_.min.y) / bandHeight_));
+  if (!bounds_.contains(p))
+    return false;
+  const auto band =
+      std::min(bands_.size() - 1, static_cast<std::size_t>((p.y - bounds_.min.y) / bandHeight_));
   bool inside = false;
   for (std::uint32_t i : bands_[band]) {
     const Vec2 a = segments_[i].a, b = segments_[i].b;
     if ((a.y > p.y) != (b.y > p.y)) {
       const double x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
-      if (p.x < x) inside = !inside;
+      if (p.x < x)
+        inside = !inside;
     }
   }
   return inside;
@@ -80,7 +83,8 @@ BoundaryHit PolygonIndex::nearestBoundary(Vec2 p, double maxDistance) const noex
   for (int r = 0;; ++r) {
     // Every point in ring r is at least (r - 1) cells away from p.
     const double ringMin = (r - 1) * cell;
-    if (r > 0 && ringMin > 0 && ringMin * ringMin > best2) break;
+    if (r > 0 && ringMin > 0 && ringMin * ringMin > best2)
+      break;
     const bool inGrid = grid_.queryRing(p, r, [&](std::uint32_t i) {
       const Vec2 q = closestPointOnSegment(p, segments_[i].a, segments_[i].b);
       const double d2 = lengthSquared(q - p);
@@ -90,9 +94,11 @@ BoundaryHit PolygonIndex::nearestBoundary(Vec2 p, double maxDistance) const noex
         hit.segment = i;
       }
     });
-    if (!inGrid) break; // every further ring lies outside the grid too
+    if (!inGrid)
+      break; // every further ring lies outside the grid too
   }
-  if (hit.segment >= 0) hit.distance = std::sqrt(best2);
+  if (hit.segment >= 0)
+    hit.distance = std::sqrt(best2);
   return hit;
 }
 
@@ -104,7 +110,8 @@ bool PolygonIndex::segmentNearBoundary(Vec2 a, Vec2 b, double clearance) const n
   bool near = false;
   grid_.query(box, [&](std::uint32_t i) {
     const double d = segmentSegmentDistance(a, b, segments_[i].a, segments_[i].b);
-    if (d < clearance || (clearance == 0.0 && d == 0.0)) near = true;
+    if (d < clearance || (clearance == 0.0 && d == 0.0))
+      near = true;
     return !near;
   });
   return near;

@@ -25,13 +25,13 @@ Vec2 LocalProjection::forward(Vec2 lonLat) const noexcept {
 
 Vec2 LocalProjection::inverse(Vec2 xy) const noexcept {
   const double rho = std::hypot(xy.x, xy.y);
-  if (rho == 0.0) return {lon0_, lat0_};
+  if (rho == 0.0)
+    return {lon0_, lat0_};
   const double c = 2.0 * std::asin(std::min(1.0, rho / (2.0 * kEarthRadius)));
   const double sinC = std::sin(c), cosC = std::cos(c);
   const double phi =
       std::asin(std::clamp(cosC * sinLat0_ + xy.y * sinC * cosLat0_ / rho, -1.0, 1.0));
-  const double lambda =
-      std::atan2(xy.x * sinC, rho * cosLat0_ * cosC - xy.y * sinLat0_ * sinC);
+  const double lambda = std::atan2(xy.x * sinC, rho * cosLat0_ * cosC - xy.y * sinLat0_ * sinC);
   return {lon0_ + lambda / kDeg, phi / kDeg};
 }
 

@@ -32,7 +32,8 @@ TEST(Rng, UniformStaysInRangeWithPlausibleMean) {
     sum += u;
   }
   EXPECT_NEAR(sum / 100000.0, 0.5, 0.01);
-  for (int i = 0; i < 1000; ++i) EXPECT_LT(rng.below(5), 5u);
+  for (int i = 0; i < 1000; ++i)
+    EXPECT_LT(rng.below(5), 5u);
 }
 
 } // namespace

@@ -6,7 +6,8 @@ namespace strahler::base {
 namespace {
 
 Result<int> half(int x) {
-  if (x % 2 != 0) return makeError(ErrorCode::kInvalidInput, "odd");
+  if (x % 2 != 0)
+    return makeError(ErrorCode::kInvalidInput, "odd");
   return x / 2;
 }
 

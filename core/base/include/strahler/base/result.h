@@ -1,10 +1,10 @@
 #pragma once
 
+#include "strahler/base/assert.h"
+
 #include <string>
 #include <utility>
 #include <variant>
-
-#include "strahler/base/assert.h"
 
 namespace strahler::base {
 
@@ -85,7 +85,8 @@ inline Error makeError(ErrorCode code, std::string message) {
 #define STRAHLER_RETURN_IF_ERROR(expr)                                                             \
   do {                                                                                             \
     auto&& strahler_status_ = (expr);                                                              \
-    if (!strahler_status_.ok()) return std::move(strahler_status_).error();                       \
+    if (!strahler_status_.ok())                                                                    \
+      return std::move(strahler_status_).error();                                                  \
   } while (false)
 
 /// Declares `lhs` from the value of `expr` (a Result), or returns its error.
@@ -93,5 +94,6 @@ inline Error makeError(ErrorCode code, std::string message) {
   STRAHLER_ASSIGN_OR_RETURN_IMPL(STRAHLER_CONCAT(strahler_result_, __LINE__), lhs, expr)
 #define STRAHLER_ASSIGN_OR_RETURN_IMPL(tmp, lhs, expr)                                             \
   auto tmp = (expr);                                                                               \
-  if (!tmp.ok()) return std::move(tmp).error();                                                    \
+  if (!tmp.ok())                                                                                   \
+    return std::move(tmp).error();                                                                 \
   lhs = std::move(tmp).value()

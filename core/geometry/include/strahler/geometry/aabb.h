@@ -1,9 +1,9 @@
 #pragma once
 
+#include "strahler/geometry/vec2.h"
+
 #include <algorithm>
 #include <limits>
-
-#include "strahler/geometry/vec2.h"
 
 namespace strahler::geometry {
 
@@ -21,12 +21,15 @@ struct Aabb {
   }
   /// Grows the box to hold b.
   constexpr void add(const Aabb& b) noexcept {
-    if (b.empty()) return;
+    if (b.empty())
+      return;
     add(b.min);
     add(b.max);
   }
   /// The box grown by r on every side.
-  constexpr Aabb expanded(double r) const noexcept { return {{min.x - r, min.y - r}, {max.x + r, max.y + r}}; }
+  constexpr Aabb expanded(double r) const noexcept {
+    return {{min.x - r, min.y - r}, {max.x + r, max.y + r}};
+  }
   /// Width and height.
   constexpr Vec2 size() const noexcept { return max - min; }
   /// Centre point.

@@ -1,11 +1,11 @@
 #pragma once
 
+#include "strahler/geometry/aabb.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
-
-#include "strahler/geometry/aabb.h"
 
 namespace strahler::geometry {
 
@@ -24,7 +24,8 @@ public:
     for (;;) {
       nx_ = static_cast<int>(std::floor(size.x / cellSize_)) + 1;
       ny_ = static_cast<int>(std::floor(size.y / cellSize_)) + 1;
-      if (static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) <= maxCells) break;
+      if (static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) <= maxCells)
+        break;
       cellSize_ *= 1.5;
     }
     cells_.resize(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
@@ -45,7 +46,8 @@ public:
     for (int y = y0; y <= y1; ++y)
       for (int x = x0; x <= x1; ++x)
         for (std::uint32_t id : cells_[index(x, y)])
-          if (!fn(id)) return false;
+          if (!fn(id))
+            return false;
     return true;
   }
 
@@ -56,12 +58,15 @@ public:
     const int cx = cellX(p.x), cy = cellY(p.y);
     bool any = false;
     for (int y = cy - r; y <= cy + r; ++y) {
-      if (y < 0 || y >= ny_) continue;
+      if (y < 0 || y >= ny_)
+        continue;
       const bool edgeRow = (y == cy - r || y == cy + r);
       for (int x = cx - r; x <= cx + r; x += (edgeRow || r == 0) ? 1 : 2 * r) {
-        if (x < 0 || x >= nx_) continue;
+        if (x < 0 || x >= nx_)
+          continue;
         any = true;
-        for (std::uint32_t id : cells_[index(x, y)]) fn(id);
+        for (std::uint32_t id : cells_[index(x, y)])
+          fn(id);
       }
     }
     return any;
@@ -88,7 +93,8 @@ private:
     int x0, y0, x1, y1;
     cellRange(box, x0, y0, x1, y1);
     for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) fn(cells_[index(x, y)]);
+      for (int x = x0; x <= x1; ++x)
+        fn(cells_[index(x, y)]);
   }
 
   Vec2 origin_{};

@@ -1,9 +1,9 @@
 #pragma once
 
-#include <vector>
-
 #include "strahler/geometry/aabb.h"
 #include "strahler/geometry/vec2.h"
+
+#include <vector>
 
 namespace strahler::geometry {
 

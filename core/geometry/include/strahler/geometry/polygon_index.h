@@ -1,10 +1,10 @@
 #pragma once
 
-#include <cstdint>
-#include <vector>
-
 #include "strahler/geometry/grid_index.h"
 #include "strahler/geometry/polygon.h"
+
+#include <cstdint>
+#include <vector>
 
 namespace strahler::geometry {
 
@@ -17,8 +17,8 @@ struct BoundarySegment {
 
 /// Result of a nearest-boundary query.
 struct BoundaryHit {
-  double distance = 0.0; ///< Distance to the boundary (the search limit if nothing closer).
-  Vec2 point{};          ///< Closest boundary point (undefined when nothing was found).
+  double distance = 0.0;     ///< Distance to the boundary (the search limit if nothing closer).
+  Vec2 point{};              ///< Closest boundary point (undefined when nothing was found).
   std::int64_t segment = -1; ///< Index of the closest segment, -1 when none within the limit.
 };
 
