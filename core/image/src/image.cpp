@@ -1,0 +1,177 @@
+// The only translation unit that includes OpenImageIO: every OIIO failure becomes a
+// base::Error naming the file here, and nothing OIIO-specific leaks through image.h.
+#include "strahler/image/image.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <exception>
+#include <filesystem>
+#include <new>
+#include <system_error>
+
+namespace strahler::image {
+namespace {
+
+using base::ErrorCode;
+using base::makeError;
+
+std::string quoted(const std::string& path) {
+  return "'" + path + "'";
+}
+
+/// OIIO error text without trailing newlines, or `fallback` when it has none.
+std::string cleanMessage(std::string text, const char* fallback) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+    text.pop_back();
+  return text.empty() ? std::string(fallback) : text;
+}
+
+/// Maps OIIO's conversion of signed integer formats ([-1, 1]) onto [0, 1] like the others.
+bool isSignedInteger(OIIO::TypeDesc format) {
+  return format.basetype == OIIO::TypeDesc::INT8 || format.basetype == OIIO::TypeDesc::INT16 ||
+         format.basetype == OIIO::TypeDesc::INT32 || format.basetype == OIIO::TypeDesc::INT64;
+}
+
+base::Status checkReadable(const std::string& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (status.type() == std::filesystem::file_type::not_found)
+    return makeError(ErrorCode::kNotFound, "image " + quoted(path) + ": file not found");
+  if (ec)
+    return makeError(ErrorCode::kIoError, "image " + quoted(path) + ": " + ec.message());
+  if (std::filesystem::is_directory(status))
+    return makeError(ErrorCode::kIoError, "image " + quoted(path) + ": is a directory");
+  return base::Ok{};
+}
+
+base::Result<GrayImage> readGrayImageUnguarded(const std::string& path, std::size_t maxPixels) {
+  STRAHLER_RETURN_IF_ERROR(checkReadable(path));
+  auto input = OIIO::ImageInput::open(path);
+  if (!input)
+    return makeError(ErrorCode::kInvalidInput,
+                     "image " + quoted(path) + ": cannot read: " +
+                         cleanMessage(OIIO::geterror(), "unknown image format"));
+  const OIIO::ImageSpec spec = input->spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.depth < 1 || spec.nchannels < 1)
+    return makeError(ErrorCode::kInvalidInput, "image " + quoted(path) + ": empty image (" +
+                                                   std::to_string(spec.width) + "x" +
+                                                   std::to_string(spec.height) + ")");
+  if (spec.depth != 1)
+    return makeError(ErrorCode::kUnsupported, "image " + quoted(path) + ": volume images (depth " +
+                                                  std::to_string(spec.depth) +
+                                                  ") are not supported");
+  const auto pixelCount =
+      static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height);
+  if (pixelCount > maxPixels)
+    return makeError(ErrorCode::kLimitExceeded,
+                     "image " + quoted(path) + ": " + std::to_string(spec.width) + "x" +
+                         std::to_string(spec.height) + " = " + std::to_string(pixelCount) +
+                         " pixels is more than the limit of " + std::to_string(maxPixels));
+
+  GrayImage image;
+  image.width = spec.width;
+  image.height = spec.height;
+  image.pixels.resize(static_cast<std::size_t>(pixelCount));
+  if (!input->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+    return makeError(
+        ErrorCode::kInvalidInput,
+        "image " + quoted(path) + ": cannot read pixels: " +
+            cleanMessage(input->geterror() + OIIO::geterror(), "the file is truncated or corrupt"));
+  input->close();
+  const bool remap = isSignedInteger(spec.format);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+    float& v = image.pixels[i];
+    if (!std::isfinite(v)) {
+      const auto w = static_cast<std::size_t>(image.width);
+      return makeError(ErrorCode::kInvalidInput,
+                       "image " + quoted(path) + ": pixel (" + std::to_string(i % w) + ", " +
+                           std::to_string(i / w) + ") is not a finite number");
+    }
+    if (remap)
+      v = 0.5f * (v + 1.0f);
+  }
+  return image;
+}
+
+base::Status writePngUnguarded(const std::string& path, const RgbImage& image) {
+  if (image.width <= 0 || image.height <= 0)
+    return makeError(ErrorCode::kInvalidInput, "png " + quoted(path) + ": empty image (" +
+                                                   std::to_string(image.width) + "x" +
+                                                   std::to_string(image.height) + ")");
+  const std::uint64_t expected =
+      static_cast<std::uint64_t>(image.width) * static_cast<std::uint64_t>(image.height) * 3u;
+  if (image.pixels.size() != expected)
+    return makeError(ErrorCode::kInvalidInput,
+                     "png " + quoted(path) + ": " + std::to_string(image.pixels.size()) +
+                         " bytes of pixels, expected width*height*3 = " + std::to_string(expected));
+  auto output = OIIO::ImageOutput::create("png");
+  if (!output)
+    return makeError(ErrorCode::kInternal, "png " + quoted(path) + ": no PNG writer: " +
+                                               cleanMessage(OIIO::geterror(), "unknown error"));
+  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+  spec.attribute("png:compressionLevel", 6);
+  if (!output->open(path, spec))
+    return makeError(ErrorCode::kIoError, "png " + quoted(path) + ": cannot open for writing: " +
+                                              cleanMessage(output->geterror(), "unknown error"));
+  const bool written = output->write_image(OIIO::TypeDesc::UINT8, image.pixels.data());
+  const bool closed = output->close();
+  if (!written || !closed)
+    return makeError(ErrorCode::kIoError, "png " + quoted(path) + ": cannot write: " +
+                                              cleanMessage(output->geterror(), "unknown error"));
+  return base::Ok{};
+}
+
+} // namespace
+
+float GrayImage::at(int x, int y) const noexcept {
+  if (width <= 0 || height <= 0 ||
+      pixels.size() < static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
+    return 0.0f;
+  const auto cx = static_cast<std::size_t>(std::clamp(x, 0, width - 1));
+  const auto cy = static_cast<std::size_t>(std::clamp(y, 0, height - 1));
+  return pixels[cy * static_cast<std::size_t>(width) + cx];
+}
+
+float GrayImage::sample(double u, double v) const noexcept {
+  // Pixel centres sit at (i + 0.5) / width: the image covers [0, 1]² edge to edge.
+  const double cu = u >= 0.0 ? std::min(u, 1.0) : 0.0; // also maps NaN to 0
+  const double cv = v >= 0.0 ? std::min(v, 1.0) : 0.0;
+  const double fx = cu * width - 0.5;
+  const double fy = cv * height - 0.5;
+  const double x0 = std::floor(fx);
+  const double y0 = std::floor(fy);
+  const double tx = fx - x0;
+  const double ty = fy - y0;
+  const int ix = static_cast<int>(x0);
+  const int iy = static_cast<int>(y0);
+  const double top = at(ix, iy) * (1.0 - tx) + at(ix + 1, iy) * tx;
+  const double bottom = at(ix, iy + 1) * (1.0 - tx) + at(ix + 1, iy + 1) * tx;
+  return static_cast<float>(top * (1.0 - ty) + bottom * ty);
+}
+
+base::Result<GrayImage> readGrayImage(const std::string& path, std::size_t maxPixels) {
+  try {
+    return readGrayImageUnguarded(path, maxPixels);
+  } catch (const std::bad_alloc&) {
+    return makeError(ErrorCode::kLimitExceeded, "image " + quoted(path) + ": out of memory");
+  } catch (const std::exception& e) {
+    return makeError(ErrorCode::kInvalidInput, "image " + quoted(path) + ": " + e.what());
+  } catch (...) {
+    return makeError(ErrorCode::kInternal, "image " + quoted(path) + ": unknown failure");
+  }
+}
+
+base::Status writePng(const std::string& path, const RgbImage& image) {
+  try {
+    return writePngUnguarded(path, image);
+  } catch (const std::exception& e) {
+    return makeError(ErrorCode::kIoError, "png " + quoted(path) + ": " + e.what());
+  } catch (...) {
+    return makeError(ErrorCode::kInternal, "png " + quoted(path) + ": unknown failure");
+  }
+}
+
+} // namespace strahler::image

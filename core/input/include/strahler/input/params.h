@@ -1,0 +1,108 @@
+#pragma once
+
+#include "strahler/base/result.h"
+#include "strahler/input/limits.h"
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace strahler::input {
+
+/// Geographic bounds in degrees: west < east in [-180, 180], south < north in [-90, 90].
+struct GeoBounds {
+  double west = 0.0;
+  double south = 0.0;
+  double east = 0.0;
+  double north = 0.0;
+
+  /// Exact comparison (round-trip tests, caching).
+  bool operator==(const GeoBounds&) const = default;
+};
+
+/// What a constraint image controls (the paper's Figure 17).
+enum class ConstraintKind {
+  kMountainousness, ///< m(p) ∈ [0, 1]: river slopes and ridge steepness (λ).
+  kRiverSlope,      ///< River slope, [0, 1] mapped to [slopeMin, slopeMax].
+};
+
+/// A constraint image named in params JSON:
+/// {"kind": "mountainousness" | "riverSlope", "image": PATH, "bounds": [W, S, E, N]}.
+struct ConstraintSource {
+  ConstraintKind kind = ConstraintKind::kMountainousness;
+  std::string imagePath; ///< As written in the JSON (relative to the params file); not empty.
+  GeoBounds bounds;
+
+  /// Exact comparison.
+  bool operator==(const ConstraintSource&) const = default;
+};
+
+/// At most this many constraint images per world.
+inline constexpr std::size_t kMaxConstraints = 16;
+
+/// Every knob of the generation method (Génevaux et al. 2013, Sections 4-5), with the
+/// defaults used when params.json leaves it out. Lengths in metres, slopes in m/m, angles in
+/// degrees; every value must be finite, and the ranges below are enforced by validateParams.
+struct Params {
+  // --- Network growth (Section 4.2) ---
+  double edgeLength = 1000.0; ///< e: length of every river edge, in [50, 20000].
+  double sigma = 800.0;       ///< σ: min distance between non-adjacent edges; > e/√2.
+  double delta = 300.0;       ///< δ: min distance from an edge to the coast Γ; in [0, 10 e).
+  double kappa = 0.3;         ///< κ: max slope between a new node and nearby nodes; (0, 10].
+  double zeta = 20.0;         ///< ζ: height window (m) of node selection, ≥ 0; 0 = lowest first.
+  double probContinue = 0.2;  ///< Pc: rule 2.1, prolongation; [0, 1]; Pc + Pa + Ps = 1 ± 1e-6.
+  double probAsymmetric = 0.7; ///< Pa: rule 2.2, asymmetric Strahler branching; [0, 1].
+  double probSymmetric = 0.1;  ///< Ps: rule 2.3, symmetric Strahler branching; [0, 1].
+  double branchAngle = 65.0;   ///< Degrees between a branch and its parent's direction; (0, 90].
+  double angleJitter = 15.0;   ///< Degrees of random deviation of each new edge; [0, 60].
+  int fillBranches = 5;        ///< Rule 1: up to this many children when filling; [1, 5].
+
+  // --- Elevation-increment (mountainousness) law ---
+  // A new node is higher than its parent by Δz = e · s · (1 + jitter · u), u ∈ [-1, 1),
+  // s = slopeMin + (slopeMax - slopeMin) · m(p), where the mountainousness m(p) ∈ [0, 1]
+  // rises with distance to the coast over coastRamp (or comes from a constraint image).
+  double slopeMin = 0.004; ///< River slope at m = 0 (plains, beaches); 0 ≤ slopeMin ≤ slopeMax.
+  double slopeMax = 0.06;  ///< River slope at m = 1 (mountains); slopeMax < κ.
+  double slopeJitter = 0.5;  ///< Relative random spread of Δz, in [0, 1).
+  double coastRamp = 8000.0; ///< Distance from the coast over which m(p) rises 0 -> 1; > 0.
+
+  // --- Mouths (Section 4.1) ---
+  int maxPriority = 5;                 ///< Priority s of the best placed mouths; [1, 12].
+  double mouthSpacing = 3000.0;        ///< Min distance between automatic mouths; > 0.
+  double accessibilityRadius = 4000.0; ///< Radius of the land-fraction (concavity) measure; > 0.
+
+  // --- Ridges (Section 5.1) ---
+  double lambda = 0.2;             ///< λ: ridge rise per metre from the river nodes, [0, 1].
+  double lambdaCoastFactor = 0.25; ///< λ multiplier at the coast (gentle beaches), (0, 1].
+
+  // --- Rosgen typing (Section 5.2) ---
+  double straightMinSlope = 0.02;     ///< Sections at least this steep are B (straight), else E.
+  double braidedMinFlow = 4.0;        ///< m³/s; D (braided) needs this flow ...
+  double braidedMaxDistance = 3000.0; ///< ... within this river distance of its mouth.
+  double deltaMinFlow = 6.0; ///< m³/s; a mouth with this flow is a D delta. Rosgen values ≥ 0.
+
+  std::uint64_t seed = 1; ///< Seed of every random choice; JSON: an integer, or a decimal string.
+
+  std::vector<ConstraintSource> constraints; ///< Constraint images, ≤ kMaxConstraints.
+
+  /// Exact, field-by-field comparison.
+  bool operator==(const Params&) const = default;
+};
+
+/// Parses params JSON (an object whose keys are the field names above, camelCase) on top
+/// of the defaults, then validates it. Errors name the key: unknown keys (kInvalidInput,
+/// suggesting the closest known key when ≤ 2 edits away), wrong types (kInvalidInput), values
+/// outside their range (kOutOfRange), broken cross-field rules such as Pc + Pa + Ps ≠ 1 or
+/// σ ≤ e/√2 (kInvalidInput), more than kMaxConstraints constraints (kLimitExceeded).
+/// `limits` caps the size and nesting of the text.
+base::Result<Params> parseParams(std::string_view json, const InputLimits& limits = {});
+
+/// Checks the ranges and cross-field rules of `params` (what parseParams enforces).
+base::Status validateParams(const Params& params);
+
+/// Canonical JSON of every field (fixed key order, shortest round-trip numbers), for hashing;
+/// parseParams(canonicalJson(p)) == p for every valid p (a -0.0 reads back as 0.0).
+std::string canonicalJson(const Params& params);
+
+} // namespace strahler::input
