@@ -1,0 +1,31 @@
+#pragma once
+
+#include "strahler/base/result.h"
+#include "strahler/geometry/polygon_index.h"
+#include "strahler/input/world_spec.h"
+
+#include <vector>
+
+namespace strahler::network {
+
+/// A place on the shore where a river tree starts.
+struct MouthSite {
+  geometry::Vec2 position;    ///< On the coast or a lake shore, local metres.
+  geometry::Vec2 inward;      ///< Unit vector into the land.
+  int priority = 1;           ///< Grammar priority index s of the tree's root.
+  bool onLake = false;        ///< On a polygon hole (lake) rather than the sea coast.
+  double accessibility = 0.0; ///< Land fraction within accessibilityRadius (concavity).
+};
+
+/// Places mouths along Γ (Section 4.1): the shore is sampled every e/2, each sample scored by
+/// its accessibility (fraction of land within accessibilityRadius: bays score high), samples
+/// whose first edge could not grow are dropped, then the best are taken greedily at least
+/// mouthSpacing apart, and every island that can hold a river gets one. Priorities follow
+/// the rank like Strahler orders: the best mouth gets maxPriority, the next two one less,
+/// the next four one less again, and so on; lake mouths get priority 1.
+/// User mouths in `spec` replace all this: each is snapped to the nearest shore point
+/// (kInvalidInput if none lies within 5 km).
+base::Result<std::vector<MouthSite>> placeMouths(const input::WorldSpec& spec,
+                                                 const geometry::PolygonIndex& land);
+
+} // namespace strahler::network

@@ -1,0 +1,170 @@
+#include "test_worlds.h"
+
+#include "strahler/geometry/distance.h"
+#include "strahler/geometry/polygon_index.h"
+#include "strahler/network/network_growth.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+namespace strahler::network {
+namespace {
+
+struct GrownWorld {
+  input::WorldSpec spec;
+  std::unique_ptr<geometry::PolygonIndex> land;
+  RiverNetwork network;
+};
+
+GrownWorld grow(input::WorldSpec spec) {
+  GrownWorld w{std::move(spec), nullptr, {}};
+  w.land = std::make_unique<geometry::PolygonIndex>(w.spec.land);
+  auto net = generateNetwork(w.spec, *w.land);
+  EXPECT_TRUE(net.ok()) << (net.ok() ? "" : net.error().message);
+  if (net.ok())
+    w.network = std::move(net).value();
+  return w;
+}
+
+class NetworkInvariants : public ::testing::TestWithParam<std::string> {
+protected:
+  static GrownWorld make(const std::string& name) {
+    if (name == "mallorca")
+      return grow(testing::mallorcaSpec());
+    return grow(testing::defaultIslandSpec());
+  }
+};
+
+TEST_P(NetworkInvariants, GrowsAPlausibleNetwork) {
+  const GrownWorld w = make(GetParam());
+  const double areaKm2 = w.spec.areaKm2();
+  EXPECT_GT(w.network.mouths.size(), 3u);
+  // At least one node per 2 km², as in the paper's islands (Table 2: ~1 per 2.6 km²).
+  EXPECT_GT(double(w.network.nodes.size()), areaKm2 / 2.0);
+  int highest = 0;
+  for (const RiverNode& n : w.network.nodes)
+    highest = std::max(highest, n.strahler);
+  EXPECT_GE(highest, 4);
+}
+
+TEST_P(NetworkInvariants, NodesAreInsideTheLandAndAwayFromTheCoast) {
+  const GrownWorld w = make(GetParam());
+  const double delta = w.spec.params.delta;
+  for (const RiverNode& n : w.network.nodes) {
+    if (!n.parent.valid()) {
+      EXPECT_LT(w.land->distanceToBoundary(n.position, 1.0), 1e-6) << "mouths lie on the shore";
+      continue;
+    }
+    ASSERT_TRUE(w.land->contains(n.position));
+    ASSERT_GT(w.land->distanceToBoundary(n.position, delta + 1.0), delta);
+  }
+}
+
+TEST_P(NetworkInvariants, NonAdjacentEdgesAreAtLeastSigmaApart) {
+  const GrownWorld w = make(GetParam());
+  const auto& nodes = w.network.nodes;
+  const double sigma = w.spec.params.sigma;
+  // Brute force over edge pairs with a coarse bounding-box reject.
+  std::vector<std::size_t> edges;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (nodes[i].parent.valid())
+      edges.push_back(i);
+  std::size_t checked = 0;
+  for (std::size_t a = 0; a < edges.size(); ++a) {
+    const RiverNode& ea = nodes[edges[a]];
+    const geometry::Vec2 a0 = nodes[ea.parent.index()].position, a1 = ea.position;
+    for (std::size_t b = a + 1; b < edges.size(); ++b) {
+      const RiverNode& eb = nodes[edges[b]];
+      const geometry::Vec2 b0 = nodes[eb.parent.index()].position, b1 = eb.position;
+      if (std::abs(a1.x - b1.x) > 3 * sigma || std::abs(a1.y - b1.y) > 3 * sigma)
+        continue;
+      const std::size_t ia = edges[a], ib = edges[b];
+      const bool adjacent =
+          ea.parent == eb.parent || ea.parent.index() == ib || eb.parent.index() == ia;
+      if (adjacent)
+        continue;
+      ++checked;
+      ASSERT_GT(geometry::segmentSegmentDistance(a0, a1, b0, b1), sigma)
+          << "edges below nodes " << ia << " and " << ib;
+    }
+  }
+  EXPECT_GT(checked, edges.size());
+}
+
+TEST_P(NetworkInvariants, EveryNodeIsHigherThanItsParentAndReachesAMouth) {
+  const GrownWorld w = make(GetParam());
+  const auto& nodes = w.network.nodes;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const RiverNode& n = nodes[i];
+    if (!n.parent.valid()) {
+      EXPECT_EQ(n.elevation, 0.0);
+      continue;
+    }
+    ASSERT_LT(n.parent.index(), i) << "parents precede children";
+    const RiverNode& p = nodes[n.parent.index()];
+    ASSERT_GT(n.elevation, p.elevation);
+    ASSERT_NEAR(geometry::distance(n.position, p.position), w.spec.params.edgeLength, 1e-6);
+    ASSERT_EQ(n.tree, p.tree);
+  }
+  // Walking downstream from any node ends at the mouth of its tree.
+  for (std::size_t i = 0; i < nodes.size(); i += 7) {
+    std::size_t cur = i, steps = 0;
+    while (nodes[cur].parent.valid() && steps++ <= nodes.size())
+      cur = nodes[cur].parent.index();
+    ASSERT_EQ(w.network.mouths[nodes[i].tree].node.index(), cur);
+  }
+}
+
+TEST_P(NetworkInvariants, SlopesBetweenNeighboursStayBelowKappa) {
+  const GrownWorld w = make(GetParam());
+  const auto& nodes = w.network.nodes;
+  const double kappa = w.spec.params.kappa;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const RiverNode& n = nodes[i];
+    if (!n.parent.valid())
+      continue;
+    const RiverNode& p = nodes[n.parent.index()];
+    ASSERT_LT((n.elevation - p.elevation) / w.spec.params.edgeLength, kappa);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Worlds, NetworkInvariants, ::testing::Values("default", "mallorca"));
+
+TEST(NetworkGrowth, SameSeedGivesIdenticalGraph) {
+  const GrownWorld a = grow(testing::defaultIslandSpec(7));
+  const GrownWorld b = grow(testing::defaultIslandSpec(7));
+  ASSERT_EQ(a.network.nodes.size(), b.network.nodes.size());
+  for (std::size_t i = 0; i < a.network.nodes.size(); ++i) {
+    const RiverNode &x = a.network.nodes[i], &y = b.network.nodes[i];
+    ASSERT_EQ(std::memcmp(&x.position, &y.position, sizeof x.position), 0);
+    ASSERT_EQ(std::memcmp(&x.elevation, &y.elevation, sizeof x.elevation), 0);
+    ASSERT_EQ(x.parent, y.parent);
+    ASSERT_EQ(x.priority, y.priority);
+    ASSERT_EQ(x.strahler, y.strahler);
+  }
+}
+
+TEST(NetworkGrowth, DifferentSeedsGiveDifferentGraphs) {
+  const GrownWorld a = grow(testing::defaultIslandSpec(1));
+  const GrownWorld b = grow(testing::defaultIslandSpec(2));
+  bool differs = a.network.nodes.size() != b.network.nodes.size();
+  for (std::size_t i = 0; !differs && i < a.network.nodes.size(); ++i)
+    differs = !(a.network.nodes[i].position == b.network.nodes[i].position);
+  EXPECT_TRUE(differs);
+}
+
+TEST(NetworkGrowth, RefusesWorldsWithTooManyNodes) {
+  input::WorldSpec spec = testing::corsicaSpec(); // 8,700 km² at 50 m edges: ~4.8M nodes
+  spec.params.edgeLength = 50.0;
+  spec.params.sigma = 36.0;
+  geometry::PolygonIndex land(spec.land);
+  auto net = generateNetwork(spec, land);
+  ASSERT_FALSE(net.ok());
+  EXPECT_EQ(net.error().code, base::ErrorCode::kLimitExceeded);
+  EXPECT_NE(net.error().message.find("river nodes"), std::string::npos);
+}
+
+} // namespace
+} // namespace strahler::network

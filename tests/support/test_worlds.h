@@ -1,0 +1,18 @@
+#pragma once
+
+#include "strahler/input/world_spec.h"
+
+#include <string>
+
+namespace strahler::testing {
+
+/// The embedded default island with default params (and `seed`).
+input::WorldSpec defaultIslandSpec(std::uint64_t seed = 1);
+/// Mallorca (Natural Earth 1:10m, ~3,640 km²) with default params.
+input::WorldSpec mallorcaSpec(std::uint64_t seed = 1);
+/// Corsica (Natural Earth 1:10m, ~8,700 km²) with default params.
+input::WorldSpec corsicaSpec(std::uint64_t seed = 1);
+/// Contents of a file in tests/data.
+std::string readTestData(const std::string& name);
+
+} // namespace strahler::testing
