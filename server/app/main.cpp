@@ -1,0 +1,39 @@
+// strahler: procedural river networks and terrain (Génevaux et al. 2013), served as tiles.
+#include "generate_command.h"
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: strahler <command> [options]\n"
+    "commands:\n"
+    "  generate   grow the river network of a coastline and print its summary\n"
+    "  help       show this text (strahler <command> --help for a command's options)\n"
+    "  version    print the version\n";
+
+} // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> all(argv + 1, argv + argc);
+  if (all.empty()) {
+    std::fputs(kUsage, stderr);
+    return 2;
+  }
+  const std::string& command = all.front();
+  const std::vector<std::string> rest(all.begin() + 1, all.end());
+  if (command == "generate")
+    return strahler::app::runGenerate(rest);
+  if (command == "help" || command == "--help" || command == "-h") {
+    std::fputs(kUsage, stdout);
+    return 0;
+  }
+  if (command == "version" || command == "--version") {
+    std::puts("strahler " STRAHLER_VERSION);
+    return 0;
+  }
+  std::fprintf(stderr, "strahler: unknown command '%s'\n%s", command.c_str(), kUsage);
+  return 2;
+}
