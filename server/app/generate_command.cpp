@@ -109,10 +109,12 @@ int runGenerate(const std::vector<std::string>& rawArgs) {
   }
   auto seed = args.getU64("--seed");
   auto imageSize = args.getInt("--image-size", 64, 8192);
-  if (!seed)
-    return fail(seed.error());
-  if (!imageSize)
-    return fail(imageSize.error());
+  for (const auto* usageError :
+       {seed.ok() ? nullptr : &seed.error(), imageSize.ok() ? nullptr : &imageSize.error()})
+    if (usageError) {
+      std::fprintf(stderr, "strahler: %s\n%s", usageError->message.c_str(), generateUsage());
+      return 2;
+    }
 
   input::WorldSources sources;
   sources.coastPath = args.get("--coast").value_or("");

@@ -168,3 +168,54 @@ TEST(NetworkGrowth, RefusesWorldsWithTooManyNodes) {
 
 } // namespace
 } // namespace strahler::network
+
+namespace strahler::network {
+namespace {
+
+/// A constraint image of one value covering the whole land (the paper's Figure 17).
+input::ConstraintMap uniformConstraint(const input::WorldSpec& spec, input::ConstraintKind kind,
+                                       float value) {
+  geometry::Aabb box;
+  for (const geometry::Polygon& p : spec.landLonLat)
+    box.add(geometry::bounds(p.outer));
+  input::ConstraintMap map;
+  map.kind = kind;
+  map.bounds = {box.min.x - 0.1, box.min.y - 0.1, box.max.x + 0.1, box.max.y + 0.1};
+  map.image.width = map.image.height = 4;
+  map.image.pixels.assign(16, value);
+  return map;
+}
+
+double maxRise(const RiverNetwork& network) {
+  double highest = 0.0;
+  for (const RiverNode& n : network.nodes) {
+    if (n.parent.valid())
+      highest = std::max(highest, n.elevation - network.node(n.parent).elevation);
+  }
+  return highest;
+}
+
+TEST(NetworkGrowth, FlatConstraintImageGivesGentleRivers) {
+  input::WorldSpec spec = testing::defaultIslandSpec();
+  spec.constraints.push_back(
+      uniformConstraint(spec, input::ConstraintKind::kMountainousness, 0.0f));
+  const GrownWorld w = grow(std::move(spec));
+  const input::Params& p = w.spec.params;
+  EXPECT_LE(maxRise(w.network), p.edgeLength * p.slopeMin * (1.0 + p.slopeJitter) + 1e-9);
+}
+
+TEST(NetworkGrowth, SteepRiverSlopeImageGivesSteepRivers) {
+  input::WorldSpec spec = testing::defaultIslandSpec();
+  spec.constraints.push_back(uniformConstraint(spec, input::ConstraintKind::kRiverSlope, 1.0f));
+  const GrownWorld w = grow(std::move(spec));
+  const input::Params& p = w.spec.params;
+  for (const RiverNode& n : w.network.nodes) {
+    if (!n.parent.valid())
+      continue;
+    ASSERT_GE(n.elevation - w.network.node(n.parent).elevation,
+              p.edgeLength * p.slopeMax * (1.0 - p.slopeJitter) - 1e-9);
+  }
+}
+
+} // namespace
+} // namespace strahler::network

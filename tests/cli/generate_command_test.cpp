@@ -1,0 +1,162 @@
+// Runs the real strahler program as a user would, and checks its outputs and exit codes.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ProcessRun {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+
+fs::path scratchDir() {
+  const fs::path dir = fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch";
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+ProcessRun strahler(const std::string& args) {
+  const fs::path errPath = scratchDir() / "stderr.txt";
+  const std::string command =
+      std::string(STRAHLER_EXECUTABLE) + " " + args + " 2>" + errPath.string();
+  ProcessRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe)
+    return run;
+  std::array<char, 4096> buffer{};
+  std::size_t n;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+    run.out.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.err = readFile(errPath);
+  return run;
+}
+
+fs::path writeScratch(const std::string& name, const std::string& text) {
+  const fs::path path = scratchDir() / name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+TEST(GenerateCommand, PrintsASummaryOfTheDefaultIsland) {
+  const ProcessRun run = strahler("generate --quiet --json");
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto summary = nlohmann::json::parse(run.out);
+  EXPECT_NEAR(summary["areaKm2"].get<double>(), 1014.0, 20.0);
+  EXPECT_GT(summary["nodes"].get<int>(), 500);
+  EXPECT_EQ(summary["nodes"].get<int>(), summary["blocks"].get<int>());
+  EXPECT_EQ(summary["edges"].get<int>() + summary["mouths"].get<int>(),
+            summary["nodes"].get<int>());
+  EXPECT_TRUE(summary["strahlerHistogram"].contains("3"));
+  EXPECT_TRUE(summary["stageSeconds"].contains("network"));
+}
+
+TEST(GenerateCommand, TextSummaryNamesEveryFigure) {
+  const ProcessRun run = strahler("generate");
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  for (const char* label : {"land", "nodes", "edges", "blocks", "network", "Strahler", "time"})
+    EXPECT_NE(run.out.find(label), std::string::npos) << label;
+}
+
+TEST(GenerateCommand, WritesTheNetworkAsGeoJsonAndAPicture) {
+  const fs::path geojson = scratchDir() / "rivers.geojson";
+  const fs::path png = scratchDir() / "network.png";
+  fs::remove(geojson);
+  fs::remove(png);
+  const ProcessRun run = strahler(
+      "generate --quiet --coast " + std::string(STRAHLER_TEST_DATA_DIR) + "/mallorca.geojson -o " +
+      geojson.string() + " --image " + png.string() + " --image-size 400");
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto rivers = nlohmann::json::parse(readFile(geojson));
+  ASSERT_EQ(rivers["type"], "FeatureCollection");
+  int lines = 0, mouths = 0;
+  for (const auto& f : rivers["features"]) {
+    if (f["geometry"]["type"] == "LineString") {
+      ++lines;
+      EXPECT_GE(f["properties"]["strahler"].get<int>(), 1);
+      const double lon = f["geometry"]["coordinates"][0][0].get<double>();
+      EXPECT_GT(lon, 2.2); // Mallorca spans about 2.3°E to 3.5°E
+      EXPECT_LT(lon, 3.6);
+    } else {
+      ++mouths;
+    }
+  }
+  EXPECT_GT(lines, 100);
+  EXPECT_GT(mouths, 5);
+  const std::string image = readFile(png);
+  ASSERT_GT(image.size(), 24u);
+  EXPECT_EQ(image.substr(1, 3), "PNG");
+  // IHDR width, big-endian, at byte 16: the longer side is 400 pixels.
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(image[i]); };
+  EXPECT_EQ((byte(16) << 24) | (byte(17) << 16) | (byte(18) << 8) | byte(19), 400);
+}
+
+TEST(GenerateCommand, SameSeedSameBytesOtherSeedOtherNetwork) {
+  const fs::path a = scratchDir() / "a.geojson", b = scratchDir() / "b.geojson",
+                 c = scratchDir() / "c.geojson";
+  ASSERT_EQ(strahler("generate --quiet --seed 5 -o " + a.string()).exitCode, 0);
+  ASSERT_EQ(strahler("generate --quiet --seed 5 -o " + b.string()).exitCode, 0);
+  ASSERT_EQ(strahler("generate --quiet --seed 6 -o " + c.string()).exitCode, 0);
+  EXPECT_EQ(readFile(a), readFile(b));
+  EXPECT_NE(readFile(a), readFile(c));
+}
+
+struct BadRun {
+  std::string args;
+  int exitCode;
+  std::string message;
+};
+
+class GenerateCommandRejects : public ::testing::TestWithParam<BadRun> {};
+
+TEST_P(GenerateCommandRejects, WithAPreciseMessage) {
+  const BadRun& bad = GetParam();
+  const ProcessRun run = strahler(bad.args);
+  EXPECT_EQ(run.exitCode, bad.exitCode) << run.err;
+  EXPECT_NE(run.err.find(bad.message), std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find("assert"), std::string::npos);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadInput, GenerateCommandRejects,
+    ::testing::Values(
+        BadRun{"generate --coast /nonexistent/coast.geojson", 1, "file not found"},
+        BadRun{
+            "generate --coast " +
+                writeScratch("line.geojson", R"({"type":"LineString","coordinates":[[0,0],[1,1]]})")
+                    .string(),
+            1, "LineString is not a Polygon or MultiPolygon"},
+        BadRun{"generate --coast " +
+                   writeScratch("broken.geojson", R"({"type":"Polygon",)").string(),
+               1, "not valid JSON"},
+        BadRun{"generate --params " + writeScratch("typo.json", R"({"sigmaa": 900})").string(), 1,
+               "did you mean 'sigma'"},
+        BadRun{"generate --params " + writeScratch("sigma.json", R"({"sigma": 500})").string(), 1,
+               "e/√2"},
+        BadRun{"generate --seed -3", 2, "'--seed' must be an integer"},
+        BadRun{"generate --image-size 10", 2, "'--image-size' must be an integer in [64, 8192]"},
+        BadRun{"generate -o out.txt", 1, "use a .geojson"},
+        BadRun{"generate --frobnicate", 2, "unknown option '--frobnicate'"},
+        BadRun{"generate --coast", 2, "needs a value"},
+        BadRun{"transmogrify", 2, "unknown command 'transmogrify'"}));
+
+} // namespace
