@@ -9,6 +9,7 @@ packages=(
   libcgal-dev
   libopenimageio-dev
   nlohmann-json3-dev
+  libprotobuf-dev protobuf-compiler
   googletest libgtest-dev libbenchmark-dev
 )
 

@@ -1,79 +1,58 @@
 #include "generate_command.h"
 
 #include "cli_args.h"
+#include "command_support.h"
 #include "terminal_progress.h"
+#include "world_loader.h"
 #include "world_summary.h"
 
-#include "strahler/analysis/hydrology.h"
+#include "strahler/analysis/network_analysis.h"
+#include "strahler/blocks/block_set.h"
 #include "strahler/image/image.h"
 #include "strahler/input/world_spec.h"
 #include "strahler/render/network_image.h"
 #include "strahler/render/rivers_geojson.h"
+#include "strahler/store/world_file.h"
 
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 
 namespace strahler::app {
 namespace {
 
 constexpr int kDefaultImageSize = 1600;
 
-base::Status writeTextFile(const std::string& path, const std::string& text) {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out)
-      return base::makeError(base::ErrorCode::kIoError, "cannot write '" + path + "'");
-    out << text;
-    if (!out.flush())
-      return base::makeError(base::ErrorCode::kIoError, "cannot write '" + path + "'");
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec)
-    return base::makeError(base::ErrorCode::kIoError,
-                           "cannot write '" + path + "': " + ec.message());
-  return base::Ok{};
-}
-
-bool endsWith(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() &&
-         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+/// The picture of the network over its blocks; blocks are rebuilt from the graph (a few ms).
+base::Status writeNetworkImage(const std::string& path, const input::WorldSpec& spec,
+                               const construction::WorldData& world, int size) {
+  const geometry::PolygonIndex land(spec.land);
+  STRAHLER_ASSIGN_OR_RETURN(blocks::BlockSet blocks, blocks::buildBlocks(world.network, land));
+  const analysis::NetworkAnalysis analysis =
+      analysis::analyzeNetwork(spec, land, world.network, blocks);
+  return image::writePng(
+      path, render::drawNetworkImage(spec.land, world.network, blocks, analysis, size));
 }
 
 /// Writes the outputs the user asked for.
 base::Status writeOutputs(const CliArgs& args, const input::WorldSpec& spec,
-                          const analysis::Hydrology& h, int imageSize) {
-  std::vector<std::pair<std::string, bool>> outputs; // (path, is image)
+                          const construction::WorldData& world, int imageSize) {
   if (auto o = args.get("-o")) {
-    if (endsWith(*o, ".png"))
-      outputs.emplace_back(*o, true);
-    else if (endsWith(*o, ".geojson") || endsWith(*o, ".json"))
-      outputs.emplace_back(*o, false);
-    else
+    if (endsWith(*o, ".world")) {
+      STRAHLER_RETURN_IF_ERROR(store::writeWorldFile(*o, world));
+    } else if (endsWith(*o, ".png")) {
+      STRAHLER_RETURN_IF_ERROR(writeNetworkImage(*o, spec, world, imageSize));
+    } else if (endsWith(*o, ".geojson") || endsWith(*o, ".json")) {
+      STRAHLER_RETURN_IF_ERROR(writeTextFile(
+          *o, render::riversGeoJson(world.network, world.flow, world.riverTypes, spec.projection)));
+    } else {
       return base::makeError(base::ErrorCode::kInvalidInput,
                              "output '" + *o +
-                                 "': use a .geojson (river network) or .png "
-                                 "(network image) file name");
-  }
-  if (auto image = args.get("--image"))
-    outputs.emplace_back(*image, true);
-  for (const auto& [path, isImage] : outputs) {
-    if (isImage) {
-      STRAHLER_RETURN_IF_ERROR(image::writePng(
-          path, render::drawNetworkImage(spec.land, h.network, h.blocks, h.analysis, imageSize)));
-    } else {
-      STRAHLER_RETURN_IF_ERROR(
-          writeTextFile(path, render::riversGeoJson(h.network, h.analysis, spec.projection)));
+                                 "': use a .world (world file), .geojson (river "
+                                 "network) or .png (network image) file name");
     }
   }
+  if (auto image = args.get("--image"))
+    STRAHLER_RETURN_IF_ERROR(writeNetworkImage(*image, spec, world, imageSize));
   return base::Ok{};
-}
-
-int fail(const base::Error& error) {
-  std::fprintf(stderr, "strahler: error: %s\n", error.message.c_str());
-  return 1;
 }
 
 } // namespace
@@ -81,40 +60,36 @@ int fail(const base::Error& error) {
 const char* generateUsage() noexcept {
   return "usage: strahler generate [--coast FILE.geojson] [--params FILE.json] [--mouths "
          "FILE.geojson]\n"
-         "                         [--seed N] [-o OUT.geojson|OUT.png] [--image OUT.png]\n"
-         "                         [--image-size PX] [--json] [--quiet]\n"
-         "Grows the river network of a coastline (default: the embedded island) and prints a\n"
-         "summary. -o writes the river network as GeoJSON (or an image for .png); --image\n"
-         "writes a picture of the network over its blocks (PX: 64..8192, default 1600).\n";
+         "                         [--seed N] [--cache-dir DIR] [-o "
+         "OUT.world|OUT.geojson|OUT.png]\n"
+         "                         [--image OUT.png] [--image-size PX] [--json] [--quiet]\n"
+         "Generates the world of a coastline (default: the embedded island), or loads it from the\n"
+         "cache when the same inputs were generated before, and prints a summary. -o writes the\n"
+         "world file, the river network as GeoJSON, or the network image (.png); --image writes\n"
+         "the network over its blocks (PX: 64..8192, default 1600). The cache directory defaults\n"
+         "to $STRAHLER_CACHE_DIR, $XDG_CACHE_HOME/strahler or ~/.cache/strahler.\n";
 }
 
 int runGenerate(const std::vector<std::string>& rawArgs) {
-  auto parsed =
-      CliArgs::parse("generate", rawArgs,
-                     {"--coast", "--params", "--mouths", "--seed", "-o", "--image", "--image-size"},
-                     {"--json", "--quiet", "--help", "-h"});
-  if (!parsed) {
-    std::fprintf(stderr, "strahler: %s\n%s", parsed.error().message.c_str(), generateUsage());
-    return 2;
-  }
+  auto parsed = CliArgs::parse(
+      "generate", rawArgs,
+      {"--coast", "--params", "--mouths", "--seed", "--cache-dir", "-o", "--image", "--image-size"},
+      {"--json", "--quiet", "--help", "-h"});
+  if (!parsed)
+    return usageError(parsed.error(), generateUsage());
   const CliArgs& args = parsed.value();
-  if (args.has("--help") || args.has("-h")) {
-    std::fputs(generateUsage(), stdout);
-    return 0;
-  }
-  if (!args.positional().empty()) {
-    std::fprintf(stderr, "strahler: unexpected argument '%s'\n%s", args.positional()[0].c_str(),
-                 generateUsage());
-    return 2;
-  }
+  if (args.has("--help") || args.has("-h"))
+    return printUsage(generateUsage());
+  if (!args.positional().empty())
+    return usageError(
+        {base::ErrorCode::kInvalidInput, "unexpected argument '" + args.positional()[0] + "'"},
+        generateUsage());
   auto seed = args.getU64("--seed");
+  if (!seed)
+    return usageError(seed.error(), generateUsage());
   auto imageSize = args.getInt("--image-size", 64, 8192);
-  for (const auto* usageError :
-       {seed.ok() ? nullptr : &seed.error(), imageSize.ok() ? nullptr : &imageSize.error()})
-    if (usageError) {
-      std::fprintf(stderr, "strahler: %s\n%s", usageError->message.c_str(), generateUsage());
-      return 2;
-    }
+  if (!imageSize)
+    return usageError(imageSize.error(), generateUsage());
 
   input::WorldSources sources;
   sources.coastPath = args.get("--coast").value_or("");
@@ -122,25 +97,29 @@ int runGenerate(const std::vector<std::string>& rawArgs) {
   sources.mouthsPath = args.get("--mouths").value_or("");
   sources.seed = seed.value();
 
-  base::StageTimer timer;
-  timer.start("input");
   auto spec = input::loadWorldSpec(sources);
   if (!spec)
     return fail(spec.error());
-  timer.finish();
+  base::StageTimer timer;
   TerminalProgress progress(args.has("--quiet"));
-  auto hydrology = analysis::buildHydrology(spec.value(), progress.callback(), &timer);
-  if (!hydrology)
-    return fail(hydrology.error());
-
-  timer.start("output");
-  if (auto written = writeOutputs(args, spec.value(), hydrology.value(),
+  auto world =
+      loadOrGenerateWorld(spec.value(), args.get("--cache-dir").value_or(defaultCacheDir()),
+                          progress.callback(), &timer);
+  if (!world)
+    return fail(world.error());
+  for (const std::string& warning : world.value().warnings)
+    std::fprintf(stderr, "strahler: warning: %s\n", warning.c_str());
+  const construction::WorldData& data = world.value().data;
+  if (auto written = writeOutputs(args, spec.value(), data,
                                   static_cast<int>(imageSize.value().value_or(kDefaultImageSize)));
       !written)
     return fail(written.error());
-  timer.finish();
 
-  const WorldSummary summary = summarize(spec.value(), hydrology.value(), timer.stages());
+  WorldSummary summary = summarize(data, store::encodeWorld(data).size());
+  summary.filePath = world.value().path;
+  summary.fromCache = world.value().fromCache;
+  if (world.value().fromCache)
+    summary.stages = timer.stages();
   if (!args.has("--quiet") || args.has("--json"))
     std::fputs((args.has("--json") ? toJson(summary) + "\n" : toText(summary)).c_str(), stdout);
   return 0;

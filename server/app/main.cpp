@@ -1,5 +1,6 @@
 // strahler: procedural river networks and terrain (Génevaux et al. 2013), served as tiles.
 #include "generate_command.h"
+#include "world_commands.h"
 
 #include <cstdio>
 #include <string>
@@ -10,7 +11,10 @@ namespace {
 constexpr const char* kUsage =
     "usage: strahler <command> [options]\n"
     "commands:\n"
-    "  generate   grow the river network of a coastline and print its summary\n"
+    "  generate   generate (or load from the cache) the world of a coastline\n"
+    "  info       print the statistics of a world file as JSON\n"
+    "  render     draw a shaded-relief overview of a world file\n"
+    "  analyze    check drainage and river profiles of a world file (JSON)\n"
     "  help       show this text (strahler <command> --help for a command's options)\n"
     "  version    print the version\n";
 
@@ -26,6 +30,12 @@ int main(int argc, char** argv) {
   const std::vector<std::string> rest(all.begin() + 1, all.end());
   if (command == "generate")
     return strahler::app::runGenerate(rest);
+  if (command == "info")
+    return strahler::app::runInfo(rest);
+  if (command == "render")
+    return strahler::app::runRender(rest);
+  if (command == "analyze")
+    return strahler::app::runAnalyze(rest);
   if (command == "help" || command == "--help" || command == "-h") {
     std::fputs(kUsage, stdout);
     return 0;

@@ -8,31 +8,37 @@
 
 namespace strahler::app {
 
-WorldSummary summarize(const input::WorldSpec& spec, const analysis::Hydrology& h,
-                       const std::vector<base::StageTime>& stages) {
+WorldSummary summarize(const construction::WorldData& w, std::size_t fileBytes) {
   WorldSummary s;
-  s.name = spec.name;
-  s.seed = spec.params.seed;
-  s.areaKm2 = spec.areaKm2();
-  s.islands = spec.land.size();
-  for (const geometry::Polygon& p : spec.land)
+  s.name = w.name;
+  s.cacheKey = w.cacheKey;
+  s.generatorVersion = w.generatorVersion;
+  s.seed = w.params.seed;
+  s.areaKm2 = w.areaKm2();
+  s.islands = w.land.size();
+  for (const geometry::Polygon& p : w.land)
     s.lakes += p.holes.size();
-  s.mouths = h.network.mouths.size();
-  s.nodes = h.network.nodes.size();
-  s.edges = h.network.edgeCount();
-  s.blocks = h.blocks.blocks.size();
-  s.networkLengthKm = h.network.totalLength() / 1000.0;
-  s.strahlerHistogram = network::strahlerHistogram(h.network);
-  s.rosgenCounts.assign(4, 0);
-  for (analysis::RosgenType t : h.analysis.rosgen)
-    ++s.rosgenCounts[static_cast<std::size_t>(t)];
-  for (const network::RiverNode& n : h.network.nodes)
+  s.mouths = w.network.mouths.size();
+  s.nodes = w.network.nodes.size();
+  s.edges = w.network.edgeCount();
+  s.blocks = w.blocks.size();
+  s.terrainPrimitives = w.terrain.size();
+  s.riverPrimitives = w.rivers.size();
+  for (const primitives::RiverPrimitive& r : w.rivers)
+    s.riverCurvePoints += r.curve.size();
+  s.networkLengthKm = w.network.totalLength() / 1000.0;
+  s.strahlerHistogram = network::strahlerHistogram(w.network);
+  s.riverTypeCounts.assign(4, 0);
+  for (primitives::RiverType t : w.riverTypes)
+    ++s.riverTypeCounts[static_cast<std::size_t>(t)];
+  for (const network::RiverNode& n : w.network.nodes)
     s.maxRiverElevation = std::max(s.maxRiverElevation, n.elevation);
-  for (double z : h.analysis.ridgeElevation)
-    s.maxRidgeElevation = std::max(s.maxRidgeElevation, z);
-  for (double f : h.analysis.flow)
+  for (const primitives::TerrainPrimitive& t : w.terrain)
+    s.maxTerrainElevation = std::max(s.maxTerrainElevation, t.elevation);
+  for (double f : w.flow)
     s.maxFlow = std::max(s.maxFlow, f);
-  s.stages = stages;
+  s.fileBytes = fileBytes;
+  s.stages = w.stageSeconds;
   return s;
 }
 
@@ -64,13 +70,21 @@ std::string toText(const WorldSummary& s) {
     histogram +=
         (k > 1 ? "  " : "") + std::to_string(k) + ": " + std::to_string(s.strahlerHistogram[k]);
   line("Strahler", histogram);
-  line("Rosgen", "B: " + std::to_string(s.rosgenCounts[0]) +
-                     "  E: " + std::to_string(s.rosgenCounts[1]) +
-                     "  D: " + std::to_string(s.rosgenCounts[2]) +
-                     "  D-delta: " + std::to_string(s.rosgenCounts[3]));
-  line("highest",
-       format("river %.0f m", s.maxRiverElevation) + format(", ridge %.0f m", s.maxRidgeElevation));
+  line("Rosgen", "B: " + std::to_string(s.riverTypeCounts[0]) +
+                     "  E: " + std::to_string(s.riverTypeCounts[1]) +
+                     "  D: " + std::to_string(s.riverTypeCounts[2]) +
+                     "  D-delta: " + std::to_string(s.riverTypeCounts[3]));
+  line("primitives", std::to_string(s.terrainPrimitives) + " terrain, " +
+                         std::to_string(s.riverPrimitives) + " river (" +
+                         std::to_string(s.riverCurvePoints) + " curve points)");
+  line("highest", format("river %.0f m", s.maxRiverElevation) +
+                      format(", terrain base %.0f m", s.maxTerrainElevation));
   line("largest flow", format("%.1f m³/s", s.maxFlow));
+  line("world file",
+       std::to_string(s.fileBytes) + " bytes" +
+           format(" (%.0f bytes/km²)", double(s.fileBytes) / std::max(s.areaKm2, 1e-9)) +
+           (s.filePath.empty() ? ""
+                               : (s.fromCache ? ", loaded from " : ", cached at ") + s.filePath));
   std::string times;
   double total = 0.0;
   for (const base::StageTime& t : s.stages) {
@@ -89,6 +103,8 @@ std::string toJson(const WorldSummary& s) {
   for (std::size_t k = 1; k < s.strahlerHistogram.size(); ++k)
     histogram[std::to_string(k)] = s.strahlerHistogram[k];
   const nlohmann::json j = {{"name", s.name},
+                            {"cacheKey", s.cacheKey},
+                            {"generatorVersion", s.generatorVersion},
                             {"seed", s.seed},
                             {"areaKm2", s.areaKm2},
                             {"islands", s.islands},
@@ -100,13 +116,20 @@ std::string toJson(const WorldSummary& s) {
                             {"networkLengthKm", s.networkLengthKm},
                             {"strahlerHistogram", histogram},
                             {"rosgen",
-                             {{"B", s.rosgenCounts[0]},
-                              {"E", s.rosgenCounts[1]},
-                              {"D", s.rosgenCounts[2]},
-                              {"D-delta", s.rosgenCounts[3]}}},
+                             {{"B", s.riverTypeCounts[0]},
+                              {"E", s.riverTypeCounts[1]},
+                              {"D", s.riverTypeCounts[2]},
+                              {"D-delta", s.riverTypeCounts[3]}}},
+                            {"primitives",
+                             {{"terrain", s.terrainPrimitives},
+                              {"river", s.riverPrimitives},
+                              {"riverCurvePoints", s.riverCurvePoints}}},
                             {"maxRiverElevation", s.maxRiverElevation},
-                            {"maxRidgeElevation", s.maxRidgeElevation},
+                            {"maxTerrainElevation", s.maxTerrainElevation},
                             {"maxFlow", s.maxFlow},
+                            {"bytes", s.fileBytes},
+                            {"bytesPerKm2", double(s.fileBytes) / std::max(s.areaKm2, 1e-9)},
+                            {"fromCache", s.fromCache},
                             {"stageSeconds", stages}};
   return j.dump(2);
 }

@@ -1,17 +1,18 @@
 #pragma once
 
-#include "strahler/analysis/hydrology.h"
 #include "strahler/base/stage_timer.h"
-#include "strahler/input/world_spec.h"
+#include "strahler/construction/world_data.h"
 
 #include <string>
 #include <vector>
 
 namespace strahler::app {
 
-/// The figures `strahler generate` reports about a world.
+/// The figures `strahler generate` and `strahler info` report about a world.
 struct WorldSummary {
   std::string name;
+  std::string cacheKey;
+  std::string generatorVersion;
   std::uint64_t seed = 0;
   double areaKm2 = 0.0;
   std::size_t islands = 0;
@@ -20,18 +21,23 @@ struct WorldSummary {
   std::size_t nodes = 0;
   std::size_t edges = 0;
   std::size_t blocks = 0;
+  std::size_t terrainPrimitives = 0;
+  std::size_t riverPrimitives = 0;
+  std::size_t riverCurvePoints = 0;
   double networkLengthKm = 0.0;
   std::vector<std::size_t> strahlerHistogram; ///< Index = Strahler number; 0 unused.
-  std::vector<std::size_t> rosgenCounts;      ///< Index = RosgenType.
+  std::vector<std::size_t> riverTypeCounts;   ///< Index = primitives::RiverType.
   double maxRiverElevation = 0.0;
-  double maxRidgeElevation = 0.0;
+  double maxTerrainElevation = 0.0; ///< Highest terrain primitive base elevation c_z.
   double maxFlow = 0.0;
+  std::size_t fileBytes = 0;
+  std::string filePath;
+  bool fromCache = false;
   std::vector<base::StageTime> stages;
 };
 
-/// Collects the summary of a generated world.
-WorldSummary summarize(const input::WorldSpec& spec, const analysis::Hydrology& hydrology,
-                       const std::vector<base::StageTime>& stages);
+/// Collects the summary of a world whose file has `fileBytes` bytes.
+WorldSummary summarize(const construction::WorldData& world, std::size_t fileBytes);
 /// Human-readable, aligned text.
 std::string toText(const WorldSummary& summary);
 /// The same as a JSON object.

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 
@@ -21,7 +22,9 @@ struct ProcessRun {
 };
 
 fs::path scratchDir() {
-  const fs::path dir = fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch";
+  // One folder per process: CTest runs these tests in parallel processes.
+  const fs::path dir =
+      fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch" / std::to_string(::getpid());
   fs::create_directories(dir);
   return dir;
 }
@@ -35,8 +38,10 @@ std::string readFile(const fs::path& path) {
 
 ProcessRun strahler(const std::string& args) {
   const fs::path errPath = scratchDir() / "stderr.txt";
-  const std::string command =
-      std::string(STRAHLER_EXECUTABLE) + " " + args + " 2>" + errPath.string();
+  // Every run uses a cache inside the build tree, never the user's.
+  const std::string command = "STRAHLER_CACHE_DIR=" + (scratchDir() / "cache").string() + " " +
+                              std::string(STRAHLER_EXECUTABLE) + " " + args + " 2>" +
+                              errPath.string();
   ProcessRun run;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe)
@@ -58,6 +63,7 @@ fs::path writeScratch(const std::string& name, const std::string& text) {
 }
 
 TEST(GenerateCommand, PrintsASummaryOfTheDefaultIsland) {
+  fs::remove_all(scratchDir() / "cache");
   const ProcessRun run = strahler("generate --quiet --json");
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const auto summary = nlohmann::json::parse(run.out);
@@ -68,6 +74,17 @@ TEST(GenerateCommand, PrintsASummaryOfTheDefaultIsland) {
             summary["nodes"].get<int>());
   EXPECT_TRUE(summary["strahlerHistogram"].contains("3"));
   EXPECT_TRUE(summary["stageSeconds"].contains("network"));
+  EXPECT_FALSE(summary["fromCache"].get<bool>());
+  EXPECT_LT(summary["bytesPerKm2"].get<double>(), 500.0);
+  EXPECT_GT(summary["primitives"]["terrain"].get<int>(), 5000);
+  // The second run with the same inputs loads the cached world instead of generating it.
+  const ProcessRun again = strahler("generate --quiet --json");
+  ASSERT_EQ(again.exitCode, 0) << again.err;
+  const auto cached = nlohmann::json::parse(again.out);
+  EXPECT_TRUE(cached["fromCache"].get<bool>());
+  EXPECT_FALSE(cached["stageSeconds"].contains("network"));
+  EXPECT_EQ(cached["cacheKey"], summary["cacheKey"]);
+  EXPECT_EQ(cached["bytes"], summary["bytes"]);
 }
 
 TEST(GenerateCommand, TextSummaryNamesEveryFigure) {
@@ -154,9 +171,12 @@ INSTANTIATE_TEST_SUITE_P(
                "e/√2"},
         BadRun{"generate --seed -3", 2, "'--seed' must be an integer"},
         BadRun{"generate --image-size 10", 2, "'--image-size' must be an integer in [64, 8192]"},
-        BadRun{"generate -o out.txt", 1, "use a .geojson"},
+        BadRun{"generate -o out.txt", 1, "use a .world"},
         BadRun{"generate --frobnicate", 2, "unknown option '--frobnicate'"},
         BadRun{"generate --coast", 2, "needs a value"},
-        BadRun{"transmogrify", 2, "unknown command 'transmogrify'"}));
+        BadRun{"transmogrify", 2, "unknown command 'transmogrify'"}),
+    [](const ::testing::TestParamInfo<BadRun>& param) {
+      return "case" + std::to_string(param.index);
+    });
 
 } // namespace

@@ -22,16 +22,17 @@ json lonLat(const geometry::LocalProjection& projection, geometry::Vec2 p) {
 }
 
 /// True when the edge below node i simply continues the edge below its only child.
-bool continuesChild(const network::RiverNetwork& network, const analysis::NetworkAnalysis& a,
-                    std::size_t i) {
+bool continuesChild(const network::RiverNetwork& network,
+                    const std::vector<primitives::RiverType>& types, std::size_t i) {
   const network::RiverNode& node = network.nodes[i];
   if (node.children.size() != 1)
     return false;
   const std::size_t c = node.children.front().index();
-  return network.nodes[c].strahler == node.strahler && a.rosgen[c] == a.rosgen[i];
+  return network.nodes[c].strahler == node.strahler && types[c] == types[i];
 }
 
-json section(const network::RiverNetwork& network, const analysis::NetworkAnalysis& a,
+json section(const network::RiverNetwork& network, const std::vector<double>& flow,
+             const std::vector<primitives::RiverType>& types,
              const geometry::LocalProjection& projection, std::size_t head) {
   json coordinates = json::array({lonLat(projection, network.nodes[head].position)});
   std::size_t cur = head;
@@ -41,15 +42,15 @@ json section(const network::RiverNetwork& network, const analysis::NetworkAnalys
     const std::size_t next = network.nodes[cur].parent.index();
     coordinates.push_back(lonLat(projection, network.nodes[next].position));
     cur = next;
-    if (!network.nodes[cur].parent.valid() || !continuesChild(network, a, cur))
+    if (!network.nodes[cur].parent.valid() || !continuesChild(network, types, cur))
       break;
   }
   return {{"type", "Feature"},
           {"geometry", {{"type", "LineString"}, {"coordinates", std::move(coordinates)}}},
           {"properties",
            {{"strahler", network.nodes[head].strahler},
-            {"rosgen", analysis::rosgenName(a.rosgen[head])},
-            {"flow", round2(a.flow[lastUpstream])},
+            {"rosgen", primitives::riverTypeName(types[head])},
+            {"flow", round2(flow[lastUpstream])},
             {"elevationUp", round2(network.nodes[head].elevation)},
             {"elevationDown", round2(network.nodes[cur].elevation)},
             {"tree", network.nodes[head].tree}}}};
@@ -57,14 +58,14 @@ json section(const network::RiverNetwork& network, const analysis::NetworkAnalys
 
 } // namespace
 
-std::string riversGeoJson(const network::RiverNetwork& network,
-                          const analysis::NetworkAnalysis& analysis,
+std::string riversGeoJson(const network::RiverNetwork& network, const std::vector<double>& flow,
+                          const std::vector<primitives::RiverType>& types,
                           const geometry::LocalProjection& projection) {
   json features = json::array();
   for (std::size_t i = 0; i < network.nodes.size(); ++i) {
-    if (!network.nodes[i].parent.valid() || continuesChild(network, analysis, i))
+    if (!network.nodes[i].parent.valid() || continuesChild(network, types, i))
       continue;
-    features.push_back(section(network, analysis, projection, i));
+    features.push_back(section(network, flow, types, projection, i));
   }
   for (const network::Mouth& m : network.mouths) {
     const network::RiverNode& node = network.node(m.node);
@@ -75,7 +76,7 @@ std::string riversGeoJson(const network::RiverNetwork& network,
           {{"mouth", true},
            {"priority", node.priority},
            {"strahler", node.strahler},
-           {"flow", round2(analysis.flow[m.node.index()])},
+           {"flow", round2(flow[m.node.index()])},
            {"onLake", m.onLake}}}});
   }
   return json{{"type", "FeatureCollection"}, {"features", std::move(features)}}.dump();

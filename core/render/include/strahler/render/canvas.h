@@ -28,6 +28,8 @@ public:
   /// Draws a filled disc of the given radius in pixels.
   void drawDot(geometry::Vec2 centre, double radiusPx, Colour colour);
 
+  /// Replaces the pixels (same size as the canvas), e.g. to draw over a computed image.
+  void setImage(image::RgbImage image) { image_ = std::move(image); }
   /// The pixels drawn so far.
   const image::RgbImage& image() const noexcept { return image_; }
 

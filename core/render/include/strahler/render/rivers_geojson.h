@@ -1,10 +1,11 @@
 #pragma once
 
-#include "strahler/analysis/network_analysis.h"
 #include "strahler/geometry/projection.h"
 #include "strahler/network/river_network.h"
+#include "strahler/primitives/river_primitive.h"
 
 #include <string>
+#include <vector>
 
 namespace strahler::render {
 
@@ -12,8 +13,9 @@ namespace strahler::render {
 /// section (a run of edges with the same Strahler order and Rosgen type) with properties
 /// strahler, flow (m³/s at its downstream end), rosgen, and elevation at both ends; mouths as
 /// Point features with their priority.
-std::string riversGeoJson(const network::RiverNetwork& network,
-                          const analysis::NetworkAnalysis& analysis,
+/// `flow` and `types` hold one value per node.
+std::string riversGeoJson(const network::RiverNetwork& network, const std::vector<double>& flow,
+                          const std::vector<primitives::RiverType>& types,
                           const geometry::LocalProjection& projection);
 
 } // namespace strahler::render

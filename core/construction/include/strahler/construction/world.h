@@ -1,0 +1,70 @@
+#pragma once
+
+#include "strahler/construction/operators.h"
+#include "strahler/construction/world_data.h"
+#include "strahler/geometry/grid_index.h"
+#include "strahler/geometry/polygon_index.h"
+#include "strahler/noise/gradient_noise.h"
+
+namespace strahler::construction {
+
+/// How the relief meets the sea: a beach ramp on land and a smooth shelf below sea level.
+struct CoastShape {
+  static constexpr double kBand = 400.0;        ///< m inland over which the coast ramp acts.
+  static constexpr double kBeachSlope = 0.02;   ///< Slope of the beach ramp, m/m.
+  static constexpr double kShelfDepth = 120.0;  ///< Depth the shelf tends to, m.
+  static constexpr double kShelfWidth = 3000.0; ///< e-folding distance of the shelf, m.
+};
+
+/// The noise octaves every world shares: wavelength kLongest / 2^k for k < kOctaves.
+struct NoiseOctaves {
+  static constexpr double kLongest = 2048.0; ///< m
+  static constexpr int kOctaves = 12;        ///< down to 1 m
+};
+
+/// A world ready to evaluate: the data plus the indexes that make h(p) local.
+/// h = C(B(T…), U(R…)) (Section 6) on land, shaped by CoastShape at the shore and below
+/// the sea. Evaluation is a pure, thread-safe function of (world, point, sample spacing).
+class World {
+public:
+  /// Indexes `data` (which must be consistent, as the generator and the store make it).
+  explicit World(WorldData data);
+
+  /// The vector description.
+  const WorldData& data() const noexcept { return data_; }
+  /// The land with fast point and distance queries.
+  const geometry::PolygonIndex& land() const noexcept { return land_; }
+
+  /// Every stage of the evaluation at one point, for tests and inspection.
+  struct Evaluation {
+    Sample terrain;      ///< B(T…): blend of the terrain primitives (w = 0: none covers p).
+    Sample rivers;       ///< U(R…): union of the river primitives (w = 0: none covers p).
+    double tree = 0.0;   ///< h of C(B(T…), U(R…)) before the coast shaping.
+    double height = 0.0; ///< Final elevation after the coast shaping, m.
+  };
+
+  /// Elevation (m) at local point p for samples `spacing` metres apart: noise octaves shorter
+  /// than twice the spacing are faded out (fully present from four times the spacing).
+  double height(geometry::Vec2 p, double spacing) const noexcept {
+    return evaluate(p, spacing).height;
+  }
+  /// The full evaluation at p (see height()).
+  Evaluation evaluate(geometry::Vec2 p, double spacing) const noexcept;
+
+private:
+  Sample terrainAt(geometry::Vec2 p, double spacing) const noexcept;
+  Sample riversAt(geometry::Vec2 p) const noexcept;
+  double shapeCoast(geometry::Vec2 p, const Sample& terrain, const Sample& rivers) const noexcept;
+
+  WorldData data_;
+  geometry::PolygonIndex land_;
+  geometry::GridIndex terrainGrid_;
+  geometry::GridIndex riverGrid_;
+  noise::GradientNoise noise_;
+};
+
+/// Fade of a noise octave of wavelength `wavelength` at sample spacing `spacing`: 0 below
+/// twice the spacing, 1 from four times, linear between.
+double octaveFade(double wavelength, double spacing) noexcept;
+
+} // namespace strahler::construction

@@ -1,0 +1,23 @@
+#pragma once
+
+#include "strahler/base/result.h"
+#include "strahler/base/stage_timer.h"
+#include "strahler/construction/world_data.h"
+#include "strahler/input/world_spec.h"
+
+#include <string>
+
+namespace strahler::construction {
+
+/// Version of the generator; part of every cache key, so changing what the generator makes
+/// invalidates cached worlds.
+inline constexpr const char* kGeneratorVersion = "strahler-generator-1";
+
+/// Runs the whole generation of Sections 4–7 on `spec`: network, blocks and analysis
+/// (analysis::buildHydrology), then river and terrain primitives ("primitives"), quantised to
+/// the file's precision. `cacheKey` is recorded in the result. Stages are timed into `timer`.
+base::Result<WorldData> generateWorldData(const input::WorldSpec& spec, std::string cacheKey,
+                                          const base::ProgressCallback& progress = {},
+                                          base::StageTimer* timer = nullptr);
+
+} // namespace strahler::construction

@@ -1,0 +1,34 @@
+#include "strahler/construction/operators.h"
+
+#include <algorithm>
+
+namespace strahler::construction {
+
+Sample blend(Sample a, Sample b) noexcept {
+  const double w = a.w + b.w;
+  if (w <= 0.0)
+    return {};
+  return {(a.h * a.w + b.h * b.w) / w, 0.5 * w};
+}
+
+Sample blendSums(double weightedHeight, double weight, int count) noexcept {
+  if (weight <= 0.0 || count <= 0)
+    return {};
+  return {weightedHeight / weight, weight / count};
+}
+
+Sample replace(Sample a, Sample b) noexcept {
+  return {(1.0 - b.w) * a.h + b.w * b.h, b.w * b.w + (1.0 - b.w) * a.w};
+}
+
+Sample unite(Sample a, Sample b) noexcept {
+  return {std::max(a.h, b.h), std::max(a.w, b.w)};
+}
+
+Sample uniteByInfluence(Sample a, Sample b) noexcept {
+  if (a.w != b.w)
+    return a.w > b.w ? a : b;
+  return a.h <= b.h ? a : b;
+}
+
+} // namespace strahler::construction

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "strahler/analysis/network_analysis.h"
+#include "strahler/input/params.h"
+#include "strahler/network/river_network.h"
+#include "strahler/primitives/river_primitive.h"
+
+#include <vector>
+
+namespace strahler::primitives {
+
+/// The primitive river type of an analysed Rosgen type.
+RiverType toRiverType(analysis::RosgenType type) noexcept;
+
+/// Hydraulic geometry (Leopold & Maddock 1953 exponents): channel width 4 · φ^0.5 m and depth
+/// 0.4 · φ^0.4 m for a mean flow φ in m³/s (φ = 10: 12.6 m wide, 1.0 m deep).
+double channelWidth(double flow) noexcept;
+/// Channel depth below the water surface for flow φ, m (see channelWidth).
+double channelDepth(double flow) noexcept;
+/// Half-width r of the valley a river of this type and width replaces, m.
+double valleyRadius(RiverType type, double width) noexcept;
+
+/// The profile δ(d) across a river, relative to its water surface: a parabolic bed of the
+/// given depth for d < width/2 (flatter for braided rivers and deltas), then banks rising
+/// with the type's slope (steep V for B, gentle for E, nearly flat for D).
+double riverProfile(RiverType type, double width, double depth, double d) noexcept;
+
+/// One river primitive per edge (node → parent), in node order (mouths have none), built
+/// as Section 7.1 describes: tributaries bend to meet the main stem at a node at a right
+/// angle when their Strahler numbers differ and at 45° when they are equal; curves are
+/// smoothed, subdivided below 50 m and perturbed by type (B nearly straight, E meanders of
+/// wavelength ~11 widths, D braided jitter, deltas straight); u_z falls linearly with arc
+/// length from the upstream node to the downstream node, and width and depth vary from the
+/// upstream node's flow to the downstream node's, so sections agree where they meet.
+std::vector<RiverPrimitive> generateRiverPrimitives(const input::Params& params,
+                                                    const network::RiverNetwork& network,
+                                                    const analysis::NetworkAnalysis& analysis);
+
+} // namespace strahler::primitives

@@ -1,0 +1,254 @@
+#include "strahler/primitives/river_primitives.h"
+
+#include "strahler/base/random.h"
+#include "strahler/primitives/quantization.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace strahler::primitives {
+namespace {
+
+using geometry::Vec2;
+
+constexpr double kPi = std::numbers::pi;
+constexpr std::uint64_t kRiverStream = 0x7269766572ull;
+constexpr double kMinMeanderWavelength = 200.0; // m: keeps curves within the file budget
+
+/// The inflow of `node` that continues straight through it: highest Strahler number, then
+/// highest flow, then lowest id. Invalid for a leaf.
+network::NodeId mainInflow(const network::RiverNetwork& net, const analysis::NetworkAnalysis& a,
+                           network::NodeId node) {
+  network::NodeId best;
+  for (network::NodeId c : net.node(node).children) {
+    if (!best.valid()) {
+      best = c;
+      continue;
+    }
+    const auto& nc = net.node(c);
+    const auto& nb = net.node(best);
+    if (nc.strahler > nb.strahler ||
+        (nc.strahler == nb.strahler && a.flow[c.index()] > a.flow[best.index()]))
+      best = c;
+  }
+  return best;
+}
+
+Vec2 rotate(Vec2 v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
+/// Control polygon of the section from `node` down to its parent (Section 7.1 junctions).
+std::vector<Vec2> controlPolygon(const input::Params& params, const network::RiverNetwork& net,
+                                 const analysis::NetworkAnalysis& a, network::NodeId id) {
+  const network::RiverNode& node = net.node(id);
+  const Vec2 c = node.position;
+  const Vec2 n = net.node(node.parent).position;
+  const double length = distance(c, n);
+  std::vector<Vec2> points{c};
+  // Leave the upstream node in the direction the main inflow arrives with.
+  if (const network::NodeId up = mainInflow(net, a, id); up.valid()) {
+    const Vec2 arriving = normalize(c - net.node(up).position);
+    points.push_back(c + arriving * (0.25 * std::min(params.edgeLength, length)));
+  }
+  // Tributaries bend to meet the main stem: 90° across Strahler orders, 45° within one.
+  const network::NodeId main = mainInflow(net, a, node.parent);
+  if (main.valid() && main != id) {
+    const Vec2 stem = normalize(n - net.node(main).position);
+    const double side = cross(stem, c - n) >= 0.0 ? 1.0 : -1.0;
+    const bool sameOrder = net.node(main).strahler == node.strahler;
+    const Vec2 arrival = rotate(stem, -side * (sameOrder ? kPi / 4.0 : kPi / 2.0));
+    points.push_back(n - arrival * (0.35 * std::min(params.edgeLength, length)));
+  }
+  points.push_back(n);
+  return points;
+}
+
+/// Chaikin corner cutting with fixed end points.
+std::vector<Vec2> smooth(std::vector<Vec2> points, int iterations) {
+  for (int it = 0; it < iterations && points.size() > 2; ++it) {
+    std::vector<Vec2> out{points.front()};
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+      const Vec2 a = points[i], b = points[i + 1];
+      if (i > 0)
+        out.push_back(lerp(a, b, 0.25));
+      if (i + 2 < points.size())
+        out.push_back(lerp(a, b, 0.75));
+    }
+    out.push_back(points.back());
+    points = std::move(out);
+  }
+  return points;
+}
+
+/// Arc-length resampling at `count` + 1 uniformly spaced points.
+std::vector<Vec2> resample(const std::vector<Vec2>& points, std::size_t count) {
+  std::vector<double> cumulative{0.0};
+  for (std::size_t i = 1; i < points.size(); ++i)
+    cumulative.push_back(cumulative.back() + distance(points[i - 1], points[i]));
+  const double total = cumulative.back();
+  std::vector<Vec2> out;
+  std::size_t seg = 0;
+  for (std::size_t k = 0; k <= count; ++k) {
+    const double s = total * static_cast<double>(k) / static_cast<double>(count);
+    while (seg + 2 < cumulative.size() && cumulative[seg + 1] < s)
+      ++seg;
+    const double span = cumulative[seg + 1] - cumulative[seg];
+    out.push_back(lerp(points[seg], points[seg + 1], span > 0 ? (s - cumulative[seg]) / span : 0));
+  }
+  out.back() = points.back();
+  return out;
+}
+
+struct Meander {
+  double amplitude = 0.0;
+  double wavelength = 1.0;
+  double phase = 0.0;
+  double secondAmplitude = 0.0; // braided channels wander at two scales
+};
+
+Meander meanderFor(RiverType type, double width, base::Rng& rng) {
+  Meander m;
+  m.wavelength = std::max(11.0 * width, kMinMeanderWavelength) * rng.uniform(0.85, 1.15);
+  m.phase = rng.uniform(0.0, 2.0 * kPi);
+  switch (type) {
+  case RiverType::kSinuous:
+    m.amplitude = 0.22 * m.wavelength * rng.uniform(0.7, 1.0);
+    break;
+  case RiverType::kStraight:
+    m.amplitude = 0.03 * m.wavelength;
+    break;
+  case RiverType::kBraided:
+    m.amplitude = 0.06 * m.wavelength;
+    m.secondAmplitude = 0.03 * m.wavelength;
+    break;
+  case RiverType::kDelta:
+    break;
+  }
+  return m;
+}
+
+/// Offsets the points sideways by the meander, fading to zero at both ends so that
+/// sections still meet exactly at the nodes.
+void perturb(std::vector<Vec2>& points, const Meander& m) {
+  if (m.amplitude == 0.0 || points.size() < 3)
+    return;
+  std::vector<double> s{0.0};
+  for (std::size_t i = 1; i < points.size(); ++i)
+    s.push_back(s.back() + distance(points[i - 1], points[i]));
+  const double total = s.back();
+  const double ramp = std::min(0.5 * m.wavelength, 0.5 * total);
+  std::vector<Vec2> out = points;
+  for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+    const Vec2 tangent = points[i + 1] - points[i - 1];
+    if (lengthSquared(tangent) == 0.0)
+      continue;
+    const Vec2 normal = perpendicular(normalize(tangent));
+    const double fade = std::min({1.0, s[i] / ramp, (total - s[i]) / ramp});
+    const double t = 2.0 * kPi * s[i] / m.wavelength + m.phase;
+    const double offset = m.amplitude * std::sin(t) + m.secondAmplitude * std::sin(2.7 * t + 1.3);
+    out[i] = points[i] + normal * (offset * fade * fade * (3.0 - 2.0 * fade));
+  }
+  points = std::move(out);
+}
+
+RiverPrimitive buildSection(const input::Params& params, const network::RiverNetwork& net,
+                            const analysis::NetworkAnalysis& a, network::NodeId id) {
+  const network::RiverNode& node = net.node(id);
+  RiverPrimitive r;
+  r.node = id;
+  r.type = toRiverType(a.rosgen[id.index()]);
+  r.widthUp = quantize(channelWidth(a.flow[id.index()]), Quantum::kRadius);
+  r.widthDown = quantize(channelWidth(a.flow[node.parent.index()]), Quantum::kRadius);
+  r.depthUp = quantize(channelDepth(a.flow[id.index()]), Quantum::kElevation);
+  r.depthDown = quantize(channelDepth(a.flow[node.parent.index()]), Quantum::kElevation);
+  r.radius = quantize(valleyRadius(r.type, std::max(r.widthUp, r.widthDown)), Quantum::kRadius);
+
+  base::Rng rng(params.seed, base::mixHash(kRiverStream, id.value));
+  const Meander meander = meanderFor(r.type, r.widthUp, rng);
+  std::vector<Vec2> points = smooth(controlPolygon(params, net, a, id), 2);
+  const double step = std::min(50.0, meander.wavelength / 6.0);
+  double length = 0.0;
+  for (std::size_t i = 1; i < points.size(); ++i)
+    length += distance(points[i - 1], points[i]);
+  points = resample(points,
+                    std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(length / step))));
+  perturb(points, meander);
+
+  // u_z falls linearly with arc length from the upstream node to the downstream one.
+  const double zUp = node.elevation, zDown = net.node(node.parent).elevation;
+  std::vector<double> s{0.0};
+  for (std::size_t i = 1; i < points.size(); ++i)
+    s.push_back(s.back() + distance(points[i - 1], points[i]));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double z = zUp + (zDown - zUp) * (s.back() > 0 ? s[i] / s.back() : 1.0);
+    r.curve.push_back({quantize(points[i]), quantize(z, Quantum::kElevation)});
+  }
+  r.curve.front() = {node.position, node.elevation};
+  r.curve.back() = {net.node(node.parent).position, net.node(node.parent).elevation};
+  return r;
+}
+
+} // namespace
+
+RiverType toRiverType(analysis::RosgenType type) noexcept {
+  switch (type) {
+  case analysis::RosgenType::kStraight:
+    return RiverType::kStraight;
+  case analysis::RosgenType::kSinuous:
+    return RiverType::kSinuous;
+  case analysis::RosgenType::kBraided:
+    return RiverType::kBraided;
+  case analysis::RosgenType::kDelta:
+    return RiverType::kDelta;
+  }
+  return RiverType::kSinuous;
+}
+
+double channelWidth(double flow) noexcept {
+  return 4.0 * std::sqrt(std::max(flow, 0.0));
+}
+
+double channelDepth(double flow) noexcept {
+  return 0.4 * std::pow(std::max(flow, 0.0), 0.4);
+}
+
+double valleyRadius(RiverType type, double width) noexcept {
+  switch (type) {
+  case RiverType::kStraight:
+    return std::max(5.0 * width, 60.0);
+  case RiverType::kSinuous:
+    return std::max(8.0 * width, 120.0);
+  case RiverType::kBraided:
+    return std::max(10.0 * width, 150.0);
+  case RiverType::kDelta:
+    return std::max(12.0 * width, 200.0);
+  }
+  return 120.0;
+}
+
+double riverProfile(RiverType type, double width, double depth, double d) noexcept {
+  const double half = 0.5 * width;
+  const bool flat = type == RiverType::kBraided || type == RiverType::kDelta;
+  if (d < half) {
+    const double t2 = (d / half) * (d / half);
+    return -depth * (1.0 - (flat ? t2 * t2 : t2));
+  }
+  static constexpr double kBankSlope[] = {0.3, 0.08, 0.04, 0.02}; // by RiverType
+  return kBankSlope[static_cast<int>(type)] * (d - half);
+}
+
+std::vector<RiverPrimitive> generateRiverPrimitives(const input::Params& params,
+                                                    const network::RiverNetwork& network,
+                                                    const analysis::NetworkAnalysis& analysis) {
+  std::vector<RiverPrimitive> rivers;
+  rivers.reserve(network.edgeCount());
+  for (std::uint32_t i = 0; i < network.nodes.size(); ++i)
+    if (network.nodes[i].parent.valid())
+      rivers.push_back(buildSection(params, network, analysis, network::NodeId(i)));
+  return rivers;
+}
+
+} // namespace strahler::primitives

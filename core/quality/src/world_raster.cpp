@@ -1,0 +1,89 @@
+#include "strahler/quality/world_raster.h"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+namespace strahler::quality {
+namespace {
+
+using geometry::Vec2;
+
+CellClass classify(const construction::World& world, Vec2 p) {
+  if (world.land().contains(p))
+    return CellClass::kLand;
+  for (const geometry::Polygon& poly : world.data().land)
+    if (geometry::contains(poly.outer, p))
+      return CellClass::kLake;
+  return CellClass::kSea;
+}
+
+void sampleRows(const construction::World& world, HeightRaster& r, int first, int step) {
+  for (int y = first; y < r.height; y += step)
+    for (int x = 0; x < r.width; ++x) {
+      const Vec2 p = r.origin + Vec2{x * r.cellSize, y * r.cellSize};
+      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(r.width) +
+                            static_cast<std::size_t>(x);
+      r.heights[i] = static_cast<float>(world.height(p, r.cellSize));
+      r.cellClass[i] = static_cast<std::uint8_t>(classify(world, p));
+    }
+}
+
+void burnRivers(const construction::World& world, HeightRaster& r) {
+  const Vec2 corner = r.origin - Vec2{0.5 * r.cellSize, 0.5 * r.cellSize};
+  for (const std::vector<Vec2>& line : riverCentrelines(world))
+    for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+      const Vec2 a = line[k], b = line[k + 1];
+      // Half-cell steps, so consecutive samples fall in 8-connected cells.
+      const int steps = static_cast<int>(std::ceil(distance(a, b) / (0.5 * r.cellSize))) + 1;
+      for (int j = 0; j <= steps; ++j) {
+        const Vec2 q = lerp(a, b, static_cast<double>(j) / steps);
+        const int cx = static_cast<int>(std::floor((q.x - corner.x) / r.cellSize));
+        const int cy = static_cast<int>(std::floor((q.y - corner.y) / r.cellSize));
+        if (cx < 0 || cy < 0 || cx >= r.width || cy >= r.height)
+          continue;
+        const std::size_t i = static_cast<std::size_t>(cy) * static_cast<std::size_t>(r.width) +
+                              static_cast<std::size_t>(cx);
+        r.heights[i] = std::min(r.heights[i], static_cast<float>(world.height(q, r.cellSize)));
+      }
+    }
+}
+
+} // namespace
+
+HeightRaster rasterizeWorld(const construction::World& world, double cellSize, int threads) {
+  const geometry::Aabb box = world.land().bounds().expanded(1000.0);
+  HeightRaster r;
+  r.cellSize = cellSize;
+  r.width = static_cast<int>(box.size().x / cellSize) + 1;
+  r.height = static_cast<int>(box.size().y / cellSize) + 1;
+  r.origin = box.min + Vec2{0.5 * cellSize, 0.5 * cellSize};
+  r.heights.resize(static_cast<std::size_t>(r.width) * static_cast<std::size_t>(r.height));
+  r.cellClass.resize(r.heights.size());
+  std::vector<std::thread> pool;
+  const int n = std::max(1, threads);
+  for (int t = 1; t < n; ++t)
+    pool.emplace_back([&, t] { sampleRows(world, r, t, n); });
+  sampleRows(world, r, 0, n);
+  for (std::thread& t : pool)
+    t.join();
+  burnRivers(world, r);
+  return r;
+}
+
+std::vector<std::vector<Vec2>> riverCentrelines(const construction::World& world) {
+  std::vector<std::vector<Vec2>> lines;
+  for (const primitives::RiverPrimitive& river : world.data().rivers) {
+    std::vector<Vec2> line;
+    for (const primitives::CurvePoint& p : river.curve) {
+      line.push_back(p.position);
+      if (line.size() > 1 && !world.land().contains(p.position))
+        break; // reached the water
+    }
+    if (line.size() >= 2)
+      lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
+} // namespace strahler::quality

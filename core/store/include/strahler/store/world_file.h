@@ -1,0 +1,56 @@
+#pragma once
+
+#include "strahler/base/result.h"
+#include "strahler/construction/world_data.h"
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace strahler::store {
+
+// A world file (proto/strahler/v1/world.proto holds the payload schema):
+//
+//   offset  size  field
+//   0       14    magic "STRAHLERWORLD\0"
+//   14      4     u32 file format version, little-endian (kWorldFormatVersion)
+//   18      8     u64 payload length P, little-endian
+//   26      P     payload: a serialised strahler.v1.World message
+//   26+P    4     u32 CRC-32 (zlib's crc32) of bytes [0, 26+P), little-endian
+//
+// Every value is stored as an integer number of its quantum (primitives::Quantum), delta-coded
+// in packed columns, so a world costs a few hundred bytes per km² and reads back bit for bit.
+
+/// Version of the file layout and payload schema this strahler writes and reads.
+inline constexpr std::uint32_t kWorldFormatVersion = 1;
+/// Bytes before the payload: magic, version, payload length.
+inline constexpr std::size_t kWorldHeaderBytes = 26;
+/// Bytes after the payload: the CRC-32.
+inline constexpr std::size_t kWorldTrailerBytes = 4;
+/// Largest world file strahler reads (1 GiB, ~40× the largest world the input limits allow);
+/// larger files are refused as corrupt before they are read.
+inline constexpr std::uint64_t kMaxWorldFileBytes = std::uint64_t{1} << 30;
+
+/// The complete file bytes of `world`. Deterministic: equal worlds give equal bytes.
+/// Asserts the WorldData invariants (values on their quantum grid, parents before children,
+/// one block per node with contiguous primitive ranges, curves of ≥ 2 points, ...).
+std::string encodeWorld(const construction::WorldData& world);
+
+/// Parses and fully validates world file bytes; any fault is kCorrupt with a message naming
+/// `nameForErrors` and the fault (never a crash, never an allocation beyond a small multiple
+/// of bytes.size()). decodeWorld(encodeWorld(w)) == w exactly.
+base::Result<construction::WorldData> decodeWorld(std::string_view bytes,
+                                                  std::string_view nameForErrors);
+
+/// Writes `world` to `path` atomically: a temporary file in the same directory is written,
+/// fsynced and renamed over `path`, then the directory is fsynced. On failure the target is
+/// untouched, the temporary file removed, and the error is kIoError naming the path and cause
+/// (if only the final directory fsync fails, the new file is in place but not yet durable).
+base::Status writeWorldFile(const std::string& path, const construction::WorldData& world);
+
+/// Reads a world file: kNotFound when it does not exist, kIoError when it cannot be read,
+/// kCorrupt (see decodeWorld) when it is damaged, of another version, or over
+/// kMaxWorldFileBytes.
+base::Result<construction::WorldData> readWorldFile(const std::string& path);
+
+} // namespace strahler::store

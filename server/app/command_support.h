@@ -1,0 +1,20 @@
+#pragma once
+
+#include "strahler/base/result.h"
+
+#include <string>
+
+namespace strahler::app {
+
+/// Prints "strahler: error: <message>" to stderr; returns exit code 1 (bad input, failure).
+int fail(const base::Error& error);
+/// Prints the message and the usage text to stderr; returns exit code 2 (bad command line).
+int usageError(const base::Error& error, const char* usage);
+/// Prints the usage text to stdout; returns 0.
+int printUsage(const char* usage);
+/// True when s ends with suffix.
+bool endsWith(const std::string& s, const std::string& suffix);
+/// Writes a text file atomically (temporary file, then rename).
+base::Status writeTextFile(const std::string& path, const std::string& text);
+
+} // namespace strahler::app

@@ -1,0 +1,117 @@
+#include "world_commands.h"
+
+#include "cli_args.h"
+#include "command_support.h"
+#include "world_summary.h"
+
+#include "strahler/construction/world.h"
+#include "strahler/image/image.h"
+#include "strahler/quality/analysis_report.h"
+#include "strahler/quality/world_raster.h"
+#include "strahler/render/relief_image.h"
+#include "strahler/store/world_file.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <set>
+#include <thread>
+#include <variant>
+
+namespace strahler::app {
+namespace {
+
+constexpr const char* kInfoUsage = "usage: strahler info WORLD.world\n"
+                                   "Prints the statistics of a world file as JSON.\n";
+constexpr const char* kRenderUsage =
+    "usage: strahler render WORLD.world [--size PX] -o OUT.png\n"
+    "Draws a shaded-relief overview of the whole world with its rivers (PX: 64..8192,\n"
+    "default 1600, along the longer side).\n";
+constexpr const char* kAnalyzeUsage =
+    "usage: strahler analyze WORLD.world [--cell-size M]\n"
+    "Checks that the terrain respects its water and prints JSON: the share of land cells\n"
+    "(M metres, 5..30, default 30) that drain to the sea or a lake after filling depressions\n"
+    "shallower than 1 m, rises along river centrelines (tolerance 0.5 m), and Horton's\n"
+    "bifurcation and length ratios.\n";
+
+int threadCount() {
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+/// Parses `WORLD` plus options, reads the world file. Returns an exit code when it fails.
+struct WorldCommand {
+  CliArgs args;
+  construction::WorldData world;
+  std::size_t fileBytes = 0;
+};
+
+std::variant<WorldCommand, int> openWorld(const std::string& name,
+                                          const std::vector<std::string>& raw,
+                                          const std::set<std::string>& valued, const char* usage) {
+  auto parsed = CliArgs::parse(name, raw, valued, {"--help", "-h"});
+  if (!parsed)
+    return usageError(parsed.error(), usage);
+  if (parsed.value().has("--help") || parsed.value().has("-h"))
+    return printUsage(usage);
+  if (parsed.value().positional().size() != 1)
+    return usageError({base::ErrorCode::kInvalidInput, "expected exactly one WORLD file"}, usage);
+  const std::string path = parsed.value().positional()[0];
+  auto world = store::readWorldFile(path);
+  if (!world)
+    return fail(world.error());
+  std::error_code ec;
+  const auto bytes = std::filesystem::file_size(path, ec);
+  return WorldCommand{std::move(parsed).value(), std::move(world).value(),
+                      ec ? 0 : static_cast<std::size_t>(bytes)};
+}
+
+} // namespace
+
+int runInfo(const std::vector<std::string>& raw) {
+  auto opened = openWorld("info", raw, {}, kInfoUsage);
+  if (auto* code = std::get_if<int>(&opened))
+    return *code;
+  const WorldCommand& c = std::get<WorldCommand>(opened);
+  std::puts(toJson(summarize(c.world, c.fileBytes)).c_str());
+  return 0;
+}
+
+int runRender(const std::vector<std::string>& raw) {
+  auto opened = openWorld("render", raw, {"--size", "-o"}, kRenderUsage);
+  if (auto* code = std::get_if<int>(&opened))
+    return *code;
+  WorldCommand& c = std::get<WorldCommand>(opened);
+  auto size = c.args.getInt("--size", 64, 8192);
+  if (!size)
+    return usageError(size.error(), kRenderUsage);
+  const auto out = c.args.get("-o");
+  if (!out)
+    return usageError({base::ErrorCode::kInvalidInput, "missing -o OUT.png"}, kRenderUsage);
+  const construction::World world(std::move(c.world));
+  const auto image =
+      render::drawReliefImage(world, static_cast<int>(size.value().value_or(1600)), threadCount());
+  if (auto written = image::writePng(*out, image); !written)
+    return fail(written.error());
+  return 0;
+}
+
+int runAnalyze(const std::vector<std::string>& raw) {
+  auto opened = openWorld("analyze", raw, {"--cell-size"}, kAnalyzeUsage);
+  if (auto* code = std::get_if<int>(&opened))
+    return *code;
+  WorldCommand& c = std::get<WorldCommand>(opened);
+  auto cell = c.args.getInt("--cell-size", 5, 30);
+  if (!cell)
+    return usageError(cell.error(), kAnalyzeUsage);
+  const construction::World world(std::move(c.world));
+  const double cellSize = static_cast<double>(cell.value().value_or(30));
+  const quality::DrainageReport drainage =
+      quality::checkDrainage(quality::rasterizeWorld(world, cellSize, threadCount()), 1.0);
+  const quality::RiverProfileReport rivers = quality::checkRiversDescend(
+      quality::riverCentrelines(world), [&](geometry::Vec2 p) { return world.height(p, 1.0); }, 5.0,
+      0.5);
+  const quality::HortonStatistics horton = quality::hortonStatistics(world.data().network);
+  std::puts(quality::analysisReportJson(drainage, horton, rivers).c_str());
+  return 0;
+}
+
+} // namespace strahler::app

@@ -1,0 +1,126 @@
+#include "test_worlds.h"
+
+#include "strahler/construction/world.h"
+#include "strahler/construction/world_builder.h"
+#include "strahler/quality/drainage.h"
+#include "strahler/quality/river_profile.h"
+#include "strahler/quality/world_raster.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+namespace strahler::construction {
+namespace {
+
+using geometry::Vec2;
+
+/// The default island, generated once for the whole suite.
+const World& defaultWorld() {
+  static const std::unique_ptr<World> world = [] {
+    auto data = generateWorldData(testing::defaultIslandSpec(), "test");
+    EXPECT_TRUE(data.ok()) << data.error().message;
+    return std::make_unique<World>(std::move(data).value());
+  }();
+  return *world;
+}
+
+TEST(World, RiversNeverRiseDownstream) {
+  const World& world = defaultWorld();
+  const auto centrelines = quality::riverCentrelines(world);
+  const quality::RiverProfileReport report = quality::checkRiversDescend(
+      centrelines, [&](Vec2 p) { return world.height(p, 1.0); }, 5.0, 0.5);
+  EXPECT_GT(report.samples, 10000u);
+  EXPECT_EQ(report.violations, 0u) << "worst rise " << report.worstRise << " m at "
+                                   << report.worstAt.x << ", " << report.worstAt.y;
+}
+
+TEST(World, AlmostAllLandDrainsToTheSeaOrALake) {
+  const quality::DrainageReport report =
+      quality::checkDrainage(quality::rasterizeWorld(defaultWorld(), 30.0, 2), 1.0);
+  EXPECT_GT(report.landCells, 900000u);
+  EXPECT_GE(report.drainingFraction, 0.99) << report.pits << " pits";
+}
+
+TEST(World, CoastSitsAtSeaLevelAndTheSeaHasDepth) {
+  const World& world = defaultWorld();
+  const geometry::Ring& coast = world.data().land[0].outer;
+  std::size_t checked = 0;
+  for (std::size_t i = 0; i < coast.size(); i += 5) {
+    const World::Evaluation e = world.evaluate(coast[i], 10.0);
+    if (e.rivers.w > 0.0)
+      continue; // river mouths cut below sea level
+    EXPECT_NEAR(e.height, 0.0, 0.5);
+    ++checked;
+  }
+  EXPECT_GT(checked, 50u);
+  const Vec2 farOut = world.land().bounds().max + Vec2{20000.0, 20000.0};
+  const World::Evaluation sea = world.evaluate(farOut, 100.0);
+  EXPECT_EQ(sea.terrain.w, 0.0);
+  EXPECT_EQ(sea.rivers.w, 0.0);
+  EXPECT_LT(sea.height, -0.9 * CoastShape::kShelfDepth);
+}
+
+TEST(World, TerrainCoversTheLand) {
+  const World& world = defaultWorld();
+  const geometry::Aabb box = world.land().bounds();
+  std::size_t land = 0;
+  for (int i = 0; i < 200; ++i)
+    for (int j = 0; j < 100; ++j) {
+      const Vec2 p = box.min + Vec2{box.size().x * (i + 0.5) / 200, box.size().y * (j + 0.5) / 100};
+      if (!world.land().contains(p))
+        continue;
+      ++land;
+      const World::Evaluation e = world.evaluate(p, 50.0);
+      ASSERT_GT(e.terrain.w, 0.0) << p.x << ", " << p.y;
+      ASSERT_TRUE(std::isfinite(e.height));
+      ASSERT_GT(e.height, -20.0);
+      ASSERT_LT(e.height, 3000.0);
+    }
+  EXPECT_GT(land, 5000u);
+}
+
+TEST(World, CoarserSpacingOnlyFadesShortOctaves) {
+  const World& world = defaultWorld();
+  const geometry::Aabb box = world.land().bounds();
+  double worst = 0.0;
+  for (int i = 0; i < 400; ++i) {
+    const Vec2 p = box.min + Vec2{box.size().x * (i + 0.5) / 400, box.size().y * 0.5};
+    const World::Evaluation fine = world.evaluate(p, 1.0);
+    const World::Evaluation coarse = world.evaluate(p, 500.0);
+    // Same primitives, same rivers: only the noise differs...
+    ASSERT_EQ(fine.terrain.w, coarse.terrain.w);
+    ASSERT_EQ(fine.rivers.h, coarse.rivers.h);
+    worst = std::max(worst, std::abs(fine.height - coarse.height));
+  }
+  // ... by at most the amplitude of the octaves under 2 km (a few tens of metres).
+  EXPECT_LT(worst, 60.0);
+  EXPECT_GT(worst, 0.0);
+}
+
+TEST(World, GenerationIsDeterministic) {
+  const auto a = generateWorldData(testing::defaultIslandSpec(3), "k").value();
+  const auto b = generateWorldData(testing::defaultIslandSpec(3), "k").value();
+  EXPECT_EQ(a.terrain, b.terrain);
+  EXPECT_EQ(a.rivers, b.rivers);
+  EXPECT_EQ(a.blocks, b.blocks);
+  EXPECT_EQ(a.flow, b.flow);
+  const World wa(a), wb(b);
+  for (int i = 0; i < 100; ++i) {
+    const Vec2 p{i * 173.0 - 8000.0, i * 59.0 - 3000.0};
+    EXPECT_EQ(wa.height(p, 2.0), wb.height(p, 2.0));
+  }
+}
+
+TEST(World, HasAboutTenTerrainPrimitivesPerKm2) {
+  const World& world = defaultWorld();
+  const double perKm2 = double(world.data().terrain.size()) / world.data().areaKm2();
+  EXPECT_GT(perKm2, 7.0);
+  EXPECT_LT(perKm2, 13.0);
+  EXPECT_EQ(world.data().rivers.size(), world.data().network.edgeCount());
+  EXPECT_EQ(world.data().blocks.size(), world.data().network.nodes.size());
+}
+
+} // namespace
+} // namespace strahler::construction

@@ -1,0 +1,150 @@
+// World files on disk: round trip, missing and oversized files, and atomic replacement.
+
+#include "world_fixtures.h"
+
+#include "strahler/store/world_file.h"
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace strahler::store {
+namespace {
+
+using base::ErrorCode;
+using testing::failsWith;
+using testing::listDir;
+using testing::makeLargeWorld;
+using testing::makeSmallWorld;
+using testing::scratchDir;
+using testing::worldsEqual;
+
+std::string readBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(WorldFile, WriteThenReadRoundTrips) {
+  const std::string path = scratchDir() + "/w.world";
+  const construction::WorldData world = makeSmallWorld(4);
+  ASSERT_TRUE(writeWorldFile(path, world).ok());
+  EXPECT_EQ(readBytes(path), encodeWorld(world));
+  auto read = readWorldFile(path);
+  ASSERT_TRUE(read.ok()) << read.error().message;
+  EXPECT_TRUE(worldsEqual(read.value(), world));
+}
+
+TEST(WorldFile, OverwritingReplacesTheFileAndLeavesNoTemporaryFile) {
+  const std::string dir = scratchDir();
+  const std::string path = dir + "/w.world";
+  ASSERT_TRUE(writeWorldFile(path, makeSmallWorld(1)).ok());
+  ASSERT_TRUE(writeWorldFile(path, makeSmallWorld(2)).ok());
+  auto read = readWorldFile(path);
+  ASSERT_TRUE(read.ok()) << read.error().message;
+  EXPECT_TRUE(worldsEqual(read.value(), makeSmallWorld(2)));
+  EXPECT_EQ(listDir(dir), std::vector<std::string>{"w.world"});
+}
+
+TEST(WorldFile, MissingFileIsNotFound) {
+  const std::string path = scratchDir() + "/absent.world";
+  EXPECT_TRUE(failsWith(readWorldFile(path), ErrorCode::kNotFound, path));
+}
+
+TEST(WorldFile, DirectoryIsAnIoError) {
+  const std::string dir = scratchDir();
+  EXPECT_TRUE(failsWith(readWorldFile(dir), ErrorCode::kIoError, "is not a regular file"));
+}
+
+TEST(WorldFile, TruncatedFileIsCorrupt) {
+  const std::string path = scratchDir() + "/cut.world";
+  const std::string bytes = encodeWorld(makeSmallWorld());
+  std::ofstream(path, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  EXPECT_TRUE(failsWith(readWorldFile(path), ErrorCode::kCorrupt, "world file '" + path + "'"));
+}
+
+TEST(WorldFile, OversizedFileIsRefusedBeforeReading) {
+  const std::string path = scratchDir() + "/huge.world";
+  std::ofstream(path, std::ios::binary) << "x";
+  std::filesystem::resize_file(path, kMaxWorldFileBytes + 1); // Sparse: no disk used.
+  EXPECT_TRUE(failsWith(readWorldFile(path), ErrorCode::kCorrupt,
+                        "world file '" + path + "' is 1073741825 bytes, more than the limit"));
+}
+
+TEST(WorldFile, MissingDirectoryIsAnIoErrorNamingThePath) {
+  const std::string path = scratchDir() + "/no/such/dir/w.world";
+  EXPECT_TRUE(failsWith(writeWorldFile(path, makeSmallWorld()), ErrorCode::kIoError,
+                        "'" + path + "': No such file or directory"));
+}
+
+/// Limits the size of any file this process writes, and restores the limit on exit.
+class FileSizeLimit {
+public:
+  explicit FileSizeLimit(rlim_t bytes) {
+    ::getrlimit(RLIMIT_FSIZE, &saved_);
+    savedHandler_ = std::signal(SIGXFSZ, SIG_IGN); // write() then fails with EFBIG.
+    rlimit limited = saved_;
+    limited.rlim_cur = bytes;
+    ::setrlimit(RLIMIT_FSIZE, &limited);
+  }
+  FileSizeLimit(const FileSizeLimit&) = delete;
+  FileSizeLimit& operator=(const FileSizeLimit&) = delete;
+  ~FileSizeLimit() {
+    ::setrlimit(RLIMIT_FSIZE, &saved_);
+    std::signal(SIGXFSZ, savedHandler_);
+  }
+
+private:
+  rlimit saved_{};
+  void (*savedHandler_)(int) = nullptr;
+};
+
+TEST(WorldFile, FailedWriteLeavesTheTargetIntactAndNoTemporaryFile) {
+  const std::string dir = scratchDir();
+  const std::string path = dir + "/w.world";
+  const construction::WorldData old = makeSmallWorld(1);
+  ASSERT_TRUE(writeWorldFile(path, old).ok());
+  base::Status status = base::Ok{};
+  {
+    const FileSizeLimit limit(4096); // The large world needs far more.
+    status = writeWorldFile(path, makeLargeWorld(100.0));
+  }
+  EXPECT_TRUE(failsWith(status, ErrorCode::kIoError, "cannot write a temporary file for '" + path));
+  EXPECT_EQ(listDir(dir), std::vector<std::string>{"w.world"});
+  auto read = readWorldFile(path);
+  ASSERT_TRUE(read.ok()) << read.error().message;
+  EXPECT_TRUE(worldsEqual(read.value(), old));
+}
+
+TEST(WorldFile, FailedRenameRemovesTheTemporaryFile) {
+  const std::string dir = scratchDir();
+  const std::string path = dir + "/taken.world";
+  std::filesystem::create_directories(path + "/inside"); // rename() cannot replace it.
+  EXPECT_TRUE(failsWith(writeWorldFile(path, makeSmallWorld()), ErrorCode::kIoError,
+                        "cannot rename the temporary file over '" + path + "'"));
+  EXPECT_EQ(listDir(dir), std::vector<std::string>{"taken.world"});
+  EXPECT_TRUE(std::filesystem::is_directory(path + "/inside"));
+}
+
+TEST(WorldFile, UnwritableDirectoryKeepsTheOldFile) {
+  if (::geteuid() == 0)
+    GTEST_SKIP() << "root ignores directory permissions";
+  const std::string dir = scratchDir();
+  const std::string path = dir + "/w.world";
+  ASSERT_TRUE(writeWorldFile(path, makeSmallWorld(1)).ok());
+  ::chmod(dir.c_str(), 0555);
+  const base::Status status = writeWorldFile(path, makeSmallWorld(2));
+  ::chmod(dir.c_str(), 0755);
+  EXPECT_TRUE(failsWith(status, ErrorCode::kIoError, path));
+  EXPECT_EQ(listDir(dir), std::vector<std::string>{"w.world"});
+  auto read = readWorldFile(path);
+  ASSERT_TRUE(read.ok());
+  EXPECT_TRUE(worldsEqual(read.value(), makeSmallWorld(1)));
+}
+
+} // namespace
+} // namespace strahler::store
