@@ -8,6 +8,7 @@ packages=(
   libboost-dev libboost-system-dev
   libcgal-dev
   libopenimageio-dev
+  libspng-dev libdraco-dev libeigen3-dev
   nlohmann-json3-dev
   libprotobuf-dev protobuf-compiler
   googletest libgtest-dev libbenchmark-dev
@@ -17,6 +18,11 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# Node.js runs the independent decoders in the tests; a machine may already have it from
+# another source (e.g. NodeSource, whose nodejs bundles npm), so look for the commands.
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+  missing+=(nodejs npm)
+fi
 if [ ${#missing[@]} -eq 0 ]; then
   exit 0
 fi

@@ -37,16 +37,19 @@ int threadCount() {
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
-/// Parses `WORLD` plus options, reads the world file. Returns an exit code when it fails.
+/// A world command's parsed options and its world file.
 struct WorldCommand {
   CliArgs args;
   construction::WorldData world;
   std::size_t fileBytes = 0;
 };
 
+/// Parses `WORLD` plus options (`required` ones must be there), then reads the world file.
+/// Returns an exit code instead when either fails.
 std::variant<WorldCommand, int> openWorld(const std::string& name,
                                           const std::vector<std::string>& raw,
-                                          const std::set<std::string>& valued, const char* usage) {
+                                          const std::set<std::string>& valued, const char* usage,
+                                          const std::set<std::string>& required = {}) {
   auto parsed = CliArgs::parse(name, raw, valued, {"--help", "-h"});
   if (!parsed)
     return usageError(parsed.error(), usage);
@@ -54,6 +57,9 @@ std::variant<WorldCommand, int> openWorld(const std::string& name,
     return printUsage(usage);
   if (parsed.value().positional().size() != 1)
     return usageError({base::ErrorCode::kInvalidInput, "expected exactly one WORLD file"}, usage);
+  for (const std::string& option : required)
+    if (!parsed.value().get(option))
+      return usageError({base::ErrorCode::kInvalidInput, "missing " + option}, usage);
   const std::string path = parsed.value().positional()[0];
   auto world = store::readWorldFile(path);
   if (!world)
@@ -76,20 +82,18 @@ int runInfo(const std::vector<std::string>& raw) {
 }
 
 int runRender(const std::vector<std::string>& raw) {
-  auto opened = openWorld("render", raw, {"--size", "-o"}, kRenderUsage);
+  auto opened = openWorld("render", raw, {"--size", "-o"}, kRenderUsage, {"-o"});
   if (auto* code = std::get_if<int>(&opened))
     return *code;
   WorldCommand& c = std::get<WorldCommand>(opened);
   auto size = c.args.getInt("--size", 64, 8192);
   if (!size)
     return usageError(size.error(), kRenderUsage);
-  const auto out = c.args.get("-o");
-  if (!out)
-    return usageError({base::ErrorCode::kInvalidInput, "missing -o OUT.png"}, kRenderUsage);
+  const std::string out = c.args.get("-o").value_or("");
   const construction::World world(std::move(c.world));
   const auto image =
       render::drawReliefImage(world, static_cast<int>(size.value().value_or(1600)), threadCount());
-  if (auto written = image::writePng(*out, image); !written)
+  if (auto written = image::writePng(out, image); !written)
     return fail(written.error());
   return 0;
 }

@@ -3,7 +3,10 @@
 #include "test_worlds.h"
 
 #include "strahler/analysis/hydrology.h"
+#include "strahler/construction/world.h"
+#include "strahler/construction/world_builder.h"
 #include "strahler/network/network_growth.h"
+#include "strahler/store/world_file.h"
 
 #include <benchmark/benchmark.h>
 
@@ -77,6 +80,41 @@ BENCHMARK(BM_Network)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Blocks)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Analysis)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GraphPlusAnalysis)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+
+} // namespace
+} // namespace strahler
+
+namespace strahler {
+namespace {
+
+/// The whole generation (graph, analysis, primitives) — target ≤ 1 s for ~3,500 km².
+void BM_GenerateWorld(benchmark::State& state) {
+  const input::WorldSpec spec = worldFor(state.range(0));
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    auto world = construction::generateWorldData(spec, "bench");
+    bytes = store::encodeWorld(world.value()).size();
+    benchmark::DoNotOptimize(bytes);
+  }
+  state.counters["bytes/km2"] = static_cast<double>(bytes) / (geometry::area(spec.land) / 1e6);
+  setLabel(state, spec);
+}
+
+/// Reading a cached world: decode the file and index it for evaluation — target ≤ 50 ms.
+void BM_LoadWorld(benchmark::State& state) {
+  const input::WorldSpec spec = worldFor(state.range(0));
+  const std::string bytes =
+      store::encodeWorld(construction::generateWorldData(spec, "bench").value());
+  for (auto _ : state) {
+    auto data = store::decodeWorld(bytes, "bench");
+    const construction::World world(std::move(data).value());
+    benchmark::DoNotOptimize(world.data().terrain.size());
+  }
+  setLabel(state, spec);
+}
+
+BENCHMARK(BM_GenerateWorld)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LoadWorld)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 
 } // namespace
 } // namespace strahler

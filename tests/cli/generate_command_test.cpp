@@ -180,3 +180,68 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 } // namespace
+
+namespace {
+
+TEST(WorldCommands, InfoRenderAndAnalyzeAWorldFile) {
+  const fs::path world = scratchDir() / "island.world";
+  ASSERT_EQ(strahler("generate --quiet -o " + world.string()).exitCode, 0);
+
+  const ProcessRun info = strahler("info " + world.string());
+  ASSERT_EQ(info.exitCode, 0) << info.err;
+  const auto stats = nlohmann::json::parse(info.out);
+  EXPECT_EQ(stats["bytes"].get<std::size_t>(), fs::file_size(world));
+  EXPECT_LT(stats["bytesPerKm2"].get<double>(), 500.0);
+  EXPECT_GT(stats["primitives"]["terrain"].get<int>(), 5000);
+  EXPECT_EQ(stats["generatorVersion"], "strahler-generator-1");
+
+  const fs::path png = scratchDir() / "relief.png";
+  const ProcessRun render = strahler("render " + world.string() + " --size 300 -o " + png.string());
+  ASSERT_EQ(render.exitCode, 0) << render.err;
+  EXPECT_EQ(readFile(png).substr(1, 3), "PNG");
+
+  const ProcessRun analyze = strahler("analyze " + world.string());
+  ASSERT_EQ(analyze.exitCode, 0) << analyze.err;
+  const auto report = nlohmann::json::parse(analyze.out);
+  EXPECT_GE(report["drainage"]["drainingFraction"].get<double>(), 0.99);
+  EXPECT_EQ(report["rivers"]["violations"].get<int>(), 0);
+  const double rb = report["horton"]["bifurcationRatio"].get<double>();
+  EXPECT_GT(rb, 3.0);
+  EXPECT_LT(rb, 5.0);
+}
+
+TEST(WorldCommands, RejectDamagedOrMissingWorldFiles) {
+  const fs::path world = scratchDir() / "damaged.world";
+  ASSERT_EQ(strahler("generate --quiet -o " + world.string()).exitCode, 0);
+  std::string bytes = readFile(world);
+  bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 1);
+  std::ofstream(world, std::ios::binary | std::ios::trunc) << bytes;
+  const ProcessRun damaged = strahler("info " + world.string());
+  EXPECT_EQ(damaged.exitCode, 1);
+  EXPECT_NE(damaged.err.find("checksum"), std::string::npos) << damaged.err;
+
+  const ProcessRun missing = strahler("analyze /nonexistent.world");
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("/nonexistent.world"), std::string::npos) << missing.err;
+
+  const ProcessRun noOutput = strahler("render " + world.string());
+  EXPECT_EQ(noOutput.exitCode, 2);
+}
+
+TEST(WorldCommands, ADamagedCacheFileIsRegeneratedNotUsed) {
+  const fs::path cache = scratchDir() / "cache";
+  const ProcessRun first = strahler("generate --quiet --json --seed 21");
+  ASSERT_EQ(first.exitCode, 0) << first.err;
+  const std::string key = nlohmann::json::parse(first.out)["cacheKey"];
+  const fs::path file = cache / (key + ".world");
+  ASSERT_TRUE(fs::exists(file));
+  fs::resize_file(file, fs::file_size(file) / 2);
+  const ProcessRun again = strahler("generate --quiet --json --seed 21");
+  ASSERT_EQ(again.exitCode, 0) << again.err;
+  EXPECT_NE(again.err.find("warning"), std::string::npos) << again.err;
+  const auto summary = nlohmann::json::parse(again.out);
+  EXPECT_FALSE(summary["fromCache"].get<bool>());
+  EXPECT_EQ(summary["bytes"], nlohmann::json::parse(first.out)["bytes"]);
+}
+
+} // namespace
