@@ -15,6 +15,7 @@ constexpr const char* kUsage =
     "  info       print the statistics of a world file as JSON\n"
     "  render     draw a shaded-relief overview of a world file\n"
     "  analyze    check drainage and river profiles of a world file (JSON)\n"
+    "  tile       write one heightmap or mesh tile of a world file\n"
     "  help       show this text (strahler <command> --help for a command's options)\n"
     "  version    print the version\n";
 
@@ -36,6 +37,8 @@ int main(int argc, char** argv) {
     return strahler::app::runRender(rest);
   if (command == "analyze")
     return strahler::app::runAnalyze(rest);
+  if (command == "tile")
+    return strahler::app::runTile(rest);
   if (command == "help" || command == "--help" || command == "-h") {
     std::fputs(kUsage, stdout);
     return 0;

@@ -2,6 +2,7 @@
 
 #include "cli_args.h"
 #include "command_support.h"
+#include "tile_service.h"
 #include "world_summary.h"
 
 #include "strahler/construction/world.h"
@@ -32,6 +33,13 @@ constexpr const char* kAnalyzeUsage =
     "(M metres, 5..30, default 30) that drain to the sea or a lake after filling depressions\n"
     "shallower than 1 m, rises along river centrelines (tolerance 0.5 m), and Horton's\n"
     "bifurcation and length ratios.\n";
+
+constexpr const char* kTileUsage =
+    "usage: strahler tile WORLD.world --scheme web|local --z Z --x X --y Y\n"
+    "                     --format png|terrarium|png16|tif|exr|drc|glb [--size N] -o FILE\n"
+    "Writes one tile. web: Web Mercator XYZ (zoom 0..18); local: the world's metric\n"
+    "quadtree. png is Terrain-RGB. N: pixels per side for rasters (16..1024, default 256),\n"
+    "quads per side for meshes (4..256, default 64).\n";
 
 int threadCount() {
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -95,6 +103,45 @@ int runRender(const std::vector<std::string>& raw) {
       render::drawReliefImage(world, static_cast<int>(size.value().value_or(1600)), threadCount());
   if (auto written = image::writePng(out, image); !written)
     return fail(written.error());
+  return 0;
+}
+
+int runTile(const std::vector<std::string>& raw) {
+  auto opened =
+      openWorld("tile", raw, {"--scheme", "--z", "--x", "--y", "--format", "--size", "-o"},
+                kTileUsage, {"--z", "--x", "--y", "--format", "-o"});
+  if (auto* code = std::get_if<int>(&opened))
+    return *code;
+  WorldCommand& c = std::get<WorldCommand>(opened);
+  const std::string scheme = c.args.get("--scheme").value_or("web");
+  if (scheme != "web" && scheme != "local")
+    return usageError({base::ErrorCode::kInvalidInput, "--scheme must be web or local"},
+                      kTileUsage);
+  auto z = c.args.getInt("--z", 0, 30);
+  auto x = c.args.getInt("--x", 0, (1ll << 30) - 1);
+  auto y = c.args.getInt("--y", 0, (1ll << 30) - 1);
+  auto size = c.args.getInt("--size", 1, 1 << 20);
+  auto format = parseTileFormat(c.args.get("--format").value_or(""));
+  for (const base::Error* e :
+       {z.ok() ? nullptr : &z.error(), x.ok() ? nullptr : &x.error(), y.ok() ? nullptr : &y.error(),
+        size.ok() ? nullptr : &size.error(), format.ok() ? nullptr : &format.error()})
+    if (e)
+      return usageError(*e, kTileUsage);
+  const TileService service(std::move(c.world));
+  TileRequest request;
+  request.scheme =
+      scheme == "local" ? tiling::SchemeKind::kLocal : tiling::SchemeKind::kWebMercator;
+  request.tile = {static_cast<int>(*z.value()), *x.value(), *y.value()};
+  request.format = format.value();
+  request.size = static_cast<int>(size.value().value_or(0));
+  auto tile = service.render(request);
+  if (!tile)
+    return fail(tile.error());
+  if (auto written = writeTextFile(c.args.get("-o").value_or(""), tile.value().bytes); !written)
+    return fail(written.error());
+  std::fprintf(stderr, "tile %s: %zu bytes, evaluate %.2f ms, encode %.2f ms, %zu blocks\n",
+               c.args.get("-o").value_or("").c_str(), tile.value().bytes.size(),
+               tile.value().evaluateMs, tile.value().encodeMs, tile.value().stats.blocks);
   return 0;
 }
 

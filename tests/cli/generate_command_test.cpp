@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -242,6 +243,40 @@ TEST(WorldCommands, ADamagedCacheFileIsRegeneratedNotUsed) {
   const auto summary = nlohmann::json::parse(again.out);
   EXPECT_FALSE(summary["fromCache"].get<bool>());
   EXPECT_EQ(summary["bytes"], nlohmann::json::parse(first.out)["bytes"]);
+}
+
+} // namespace
+
+namespace {
+
+TEST(TileCommand, WritesEveryFormatAndRejectsBadRequests) {
+  const fs::path world = scratchDir() / "tiles.world";
+  ASSERT_EQ(strahler("generate --quiet -o " + world.string()).exitCode, 0);
+  const std::string base = "tile " + world.string() + " ";
+  const std::pair<const char*, const char*> formats[] = {
+      {"png", "\x89PNG"}, {"terrarium", "\x89PNG"}, {"png16", "\x89PNG"}, {"tif", "II*"},
+      {"exr", "v/1\x01"}, {"drc", "DRACO"},         {"glb", "glTF"}};
+  for (const auto& [format, magic] : formats) {
+    const fs::path out = scratchDir() / (std::string("t.") + format);
+    const ProcessRun run = strahler(base + "--scheme local --z 2 --x 1 --y 2 --format " + format +
+                                    " --size 32 -o " + out.string());
+    ASSERT_EQ(run.exitCode, 0) << format << ": " << run.err;
+    EXPECT_EQ(readFile(out).substr(0, std::strlen(magic)), magic) << format;
+  }
+  const ProcessRun outside = strahler(base + "--z 3 --x 8 --y 0 --format png -o x.png");
+  EXPECT_EQ(outside.exitCode, 1);
+  EXPECT_NE(outside.err.find("outside the grid"), std::string::npos) << outside.err;
+  const ProcessRun deep = strahler(base + "--z 19 --x 0 --y 0 --format png -o x.png");
+  EXPECT_EQ(deep.exitCode, 1);
+  const ProcessRun size = strahler(base + "--z 1 --x 0 --y 0 --format png --size 4096 -o x.png");
+  EXPECT_EQ(size.exitCode, 1);
+  EXPECT_NE(size.err.find("size 4096 is outside"), std::string::npos) << size.err;
+  const ProcessRun format = strahler(base + "--z 1 --x 0 --y 0 --format bmp -o x.bmp");
+  EXPECT_EQ(format.exitCode, 2);
+  EXPECT_NE(format.err.find("unknown tile format 'bmp'"), std::string::npos) << format.err;
+  const ProcessRun scheme =
+      strahler(base + "--scheme polar --z 1 --x 0 --y 0 --format png -o x.png");
+  EXPECT_EQ(scheme.exitCode, 2);
 }
 
 } // namespace

@@ -41,16 +41,26 @@ struct CurveHit {
   double along = 0.0; // 0 upstream .. 1 downstream
 };
 
+/// Only points closer than the primitive's radius matter (w = 0 beyond), so segments whose
+/// bounding box is farther than the best distance so far are skipped.
 CurveHit closestOnCurve(const primitives::RiverPrimitive& r, Vec2 p) {
   CurveHit best;
+  double bound2 = r.radius * r.radius;
   const std::size_t n = r.curve.size();
   for (std::size_t k = 0; k + 1 < n; ++k) {
     const primitives::CurvePoint& a = r.curve[k];
     const primitives::CurvePoint& b = r.curve[k + 1];
+    const double dx = std::max({std::min(a.position.x, b.position.x) - p.x, 0.0,
+                                p.x - std::max(a.position.x, b.position.x)});
+    const double dy = std::max({std::min(a.position.y, b.position.y) - p.y, 0.0,
+                                p.y - std::max(a.position.y, b.position.y)});
+    if (dx * dx + dy * dy >= bound2)
+      continue;
     const Vec2 q = geometry::closestPointOnSegment(p, a.position, b.position);
     const double d2 = lengthSquared(p - q);
-    if (d2 >= best.distance * best.distance)
+    if (d2 >= bound2)
       continue;
+    bound2 = d2;
     const double span = distance(a.position, b.position);
     const double t = span > 0.0 ? distance(a.position, q) / span : 0.0;
     best.distance = std::sqrt(d2);
@@ -73,44 +83,48 @@ World::World(WorldData data)
       riverGrid_(worldBounds(data_), kGridCell), noise_(data_.params.seed ^ kNoiseStream) {
   for (std::uint32_t i = 0; i < data_.terrain.size(); ++i) {
     const primitives::TerrainPrimitive& t = data_.terrain[i];
+    // Normalised so that the octave gains g^k sum to 1 over all octaves, whatever the spacing.
+    const double g = t.roughness;
+    noiseScale_.push_back(t.amplitude * (1.0 - g) / (1.0 - std::pow(g, NoiseOctaves::kOctaves)));
     terrainGrid_.insert(geometry::Aabb{t.center, t.center}.expanded(t.radius), i);
   }
-  for (std::uint32_t i = 0; i < data_.rivers.size(); ++i)
-    riverGrid_.insert(primitives::supportBox(data_.rivers[i]), i);
+  for (std::uint32_t i = 0; i < data_.rivers.size(); ++i) {
+    riverSupport_.push_back(primitives::supportBox(data_.rivers[i]));
+    riverGrid_.insert(riverSupport_.back(), i);
+  }
 }
 
-Sample World::terrainAt(Vec2 p, double spacing) const noexcept {
-  constexpr int K = NoiseOctaves::kOctaves;
+Sample World::terrainAt(Vec2 p, double spacing, std::span<const std::uint32_t> ids) const noexcept {
+  // Octaves that survive the LOD fade at this spacing (they get shorter, so a prefix).
+  int active = 0;
+  for (double wavelength = NoiseOctaves::kLongest;
+       active < NoiseOctaves::kOctaves && octaveFade(wavelength, spacing) > 0.0; wavelength *= 0.5)
+    ++active;
   double weight = 0.0, weightedHeight = 0.0;
-  std::array<double, K> octaveAmplitude{}; // Σ w_i a_i g_i^k / norm_i
+  std::array<double, NoiseOctaves::kOctaves> octaveAmplitude{}; // Σ w_i a_i g_i^k / norm_i
   int count = 0;
-  terrainGrid_.query(geometry::Aabb{p, p}, [&](std::uint32_t i) {
+  for (const std::uint32_t i : ids) {
     const primitives::TerrainPrimitive& t = data_.terrain[i];
     const double w = primitives::falloff(lengthSquared(p - t.center), t.radius * t.radius);
     if (w <= 0.0)
-      return true;
+      continue;
     ++count;
     weight += w;
     weightedHeight += w * t.elevation;
     if (t.amplitude > 0.0) {
-      // Normalised so that Σ_k g^k = 1 over all octaves, whatever the spacing.
       const double g = t.roughness;
-      const double norm = (1.0 - std::pow(g, K)) / (1.0 - g);
-      double gain = w * t.amplitude / norm;
-      for (int k = 0; k < K; ++k, gain *= g)
+      double gain = w * noiseScale_[i];
+      for (int k = 0; k < active; ++k, gain *= g)
         octaveAmplitude[static_cast<std::size_t>(k)] += gain;
     }
-    return true;
-  });
+  }
   if (weight <= 0.0)
     return {};
   double noise = 0.0;
   double wavelength = NoiseOctaves::kLongest;
-  for (int k = 0; k < K; ++k, wavelength *= 0.5) {
+  for (int k = 0; k < active; ++k, wavelength *= 0.5) {
     const double amplitude = octaveAmplitude[static_cast<std::size_t>(k)] / weight;
     const double fade = octaveFade(wavelength, spacing);
-    if (fade <= 0.0)
-      break; // shorter octaves fade out too
     if (amplitude < 1e-3)
       continue;
     const Vec2 offset{37.1 * k, -11.7 * k};
@@ -121,28 +135,34 @@ Sample World::terrainAt(Vec2 p, double spacing) const noexcept {
   return s;
 }
 
-Sample World::riversAt(Vec2 p) const noexcept {
+Sample World::riversAt(Vec2 p, std::span<const std::uint32_t> ids) const noexcept {
   Sample best;
-  riverGrid_.query(geometry::Aabb{p, p}, [&](std::uint32_t i) {
+  for (const std::uint32_t i : ids) {
+    if (!riverSupport_[i].contains(p))
+      continue;
     const primitives::RiverPrimitive& r = data_.rivers[i];
     const CurveHit hit = closestOnCurve(r, p);
     const double w = primitives::falloff(hit.distance * hit.distance, r.radius * r.radius);
     if (w <= 0.0)
-      return true;
+      continue;
     const double width = r.widthUp + (r.widthDown - r.widthUp) * hit.along;
     const double depth = r.depthUp + (r.depthDown - r.depthUp) * hit.along;
     const Sample s{hit.elevation + primitives::riverProfile(r.type, width, depth, hit.distance), w};
     best = best.w > 0.0 ? uniteByInfluence(best, s) : s;
-    return true;
-  });
+  }
   return best;
 }
 
-double World::shapeCoast(Vec2 p, const Sample& terrain, const Sample& rivers) const noexcept {
+double World::shelfReach() noexcept {
+  return kShelfReach;
+}
+
+double World::shapeCoast(Vec2 p, const Sample& terrain, const Sample& rivers,
+                         Coast coast) const noexcept {
   // Rivers keep their own bed (monotone downstream); only the terrain gets the beach ramp.
   // Both are capped by a surface that is 0 at the shore, so land and sea meet at 0 m,
   // river mouths included.
-  if (land_.contains(p)) {
+  if (coast != Coast::kFarSea && land_.contains(p)) {
     const double d = land_.distanceToBoundary(p, CoastShape::kBand);
     if (d >= CoastShape::kBand)
       return replace(terrain, rivers).h;
@@ -154,17 +174,24 @@ double World::shapeCoast(Vec2 p, const Sample& terrain, const Sample& rivers) co
     const double cap = d * (1.0 + 10.0 * t * t);
     return replace(shaped, {std::min(rivers.h, cap), rivers.w}).h;
   }
-  const double d = land_.distanceToBoundary(p, kShelfReach);
+  const double d = coast == Coast::kFarSea ? kShelfReach : land_.distanceToBoundary(p, kShelfReach);
   const double sea = -CoastShape::kShelfDepth * (1.0 - std::exp(-d / CoastShape::kShelfWidth));
   return replace({sea, 1.0}, {std::min(rivers.h, sea), rivers.w}).h;
 }
 
 World::Evaluation World::evaluate(Vec2 p, double spacing) const noexcept {
+  return evaluateFrom(p, spacing, terrainGrid_.cellAt(p), riverGrid_.cellAt(p));
+}
+
+World::Evaluation World::evaluateFrom(Vec2 p, double spacing,
+                                      std::span<const std::uint32_t> terrain,
+                                      std::span<const std::uint32_t> rivers,
+                                      Coast coast) const noexcept {
   Evaluation e;
-  e.terrain = terrainAt(p, spacing);
-  e.rivers = riversAt(p);
+  e.terrain = terrainAt(p, spacing, terrain);
+  e.rivers = riversAt(p, rivers);
   e.tree = replace(e.terrain, e.rivers).h;
-  e.height = shapeCoast(p, e.terrain, e.rivers);
+  e.height = coast == Coast::kInland ? e.tree : shapeCoast(p, e.terrain, e.rivers, coast);
   return e;
 }
 

@@ -23,6 +23,28 @@ Vec2 LocalProjection::forward(Vec2 lonLat) const noexcept {
           kEarthRadius * k * (cosLat0_ * sinPhi - sinLat0_ * cosPhi * cosLambda)};
 }
 
+void LocalProjection::forwardGrid(const std::vector<double>& lons, const std::vector<double>& lats,
+                                  std::vector<Vec2>& out) const {
+  std::vector<double> sinLambda(lons.size()), cosLambda(lons.size());
+  for (std::size_t i = 0; i < lons.size(); ++i) {
+    const double lambda = (lons[i] - lon0_) * kDeg;
+    sinLambda[i] = std::sin(lambda);
+    cosLambda[i] = std::cos(lambda);
+  }
+  out.resize(lons.size() * lats.size());
+  for (std::size_t j = 0; j < lats.size(); ++j) {
+    const double phi = lats[j] * kDeg;
+    const double sinPhi = std::sin(phi), cosPhi = std::cos(phi);
+    for (std::size_t i = 0; i < lons.size(); ++i) {
+      const double denom = 1.0 + sinLat0_ * sinPhi + cosLat0_ * cosPhi * cosLambda[i];
+      const double k = std::sqrt(2.0 / std::max(denom, 1e-300));
+      out[j * lons.size() + i] = {kEarthRadius * k * cosPhi * sinLambda[i],
+                                  kEarthRadius * k *
+                                      (cosLat0_ * sinPhi - sinLat0_ * cosPhi * cosLambda[i])};
+    }
+  }
+}
+
 Vec2 LocalProjection::inverse(Vec2 xy) const noexcept {
   const double rho = std::hypot(xy.x, xy.y);
   if (rho == 0.0)

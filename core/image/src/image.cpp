@@ -2,6 +2,7 @@
 // base::Error naming the file here, and nothing OIIO-specific leaks through image.h.
 #include "strahler/image/image.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -10,7 +11,9 @@
 #include <exception>
 #include <filesystem>
 #include <new>
+#include <string>
 #include <system_error>
+#include <vector>
 
 namespace strahler::image {
 namespace {
@@ -47,6 +50,63 @@ base::Status checkReadable(const std::string& path) {
   return base::Ok{};
 }
 
+/// Refuses empty, volume and oversized images; `label` names the image ("image 'a.png'").
+base::Status checkSpec(const OIIO::ImageSpec& spec, const std::string& label,
+                       std::size_t maxPixels) {
+  if (spec.width <= 0 || spec.height <= 0 || spec.depth < 1 || spec.nchannels < 1)
+    return makeError(ErrorCode::kInvalidInput, label + ": empty image (" +
+                                                   std::to_string(spec.width) + "x" +
+                                                   std::to_string(spec.height) + ")");
+  if (spec.depth != 1)
+    return makeError(ErrorCode::kUnsupported, label + ": volume images (depth " +
+                                                  std::to_string(spec.depth) +
+                                                  ") are not supported");
+  const auto pixelCount =
+      static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height);
+  if (pixelCount > maxPixels)
+    return makeError(ErrorCode::kLimitExceeded,
+                     label + ": " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                         " = " + std::to_string(pixelCount) + " pixels is more than the limit of " +
+                         std::to_string(maxPixels));
+  return base::Ok{};
+}
+
+/// Rejects non-finite pixels and maps signed integer formats onto [0, 1].
+base::Status finishPixels(GrayImage& image, OIIO::TypeDesc format, const std::string& label) {
+  const bool remap = isSignedInteger(format);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+    float& v = image.pixels[i];
+    if (!std::isfinite(v)) {
+      const auto w = static_cast<std::size_t>(image.width);
+      return makeError(ErrorCode::kInvalidInput, label + ": pixel (" + std::to_string(i % w) +
+                                                     ", " + std::to_string(i / w) +
+                                                     ") is not a finite number");
+    }
+    if (remap)
+      v = 0.5f * (v + 1.0f);
+  }
+  return base::Ok{};
+}
+
+/// Reads the first channel of an opened image as float.
+base::Result<GrayImage> readOpenedImage(OIIO::ImageInput& input, const std::string& label,
+                                        std::size_t maxPixels) {
+  const OIIO::ImageSpec spec = input.spec();
+  STRAHLER_RETURN_IF_ERROR(checkSpec(spec, label, maxPixels));
+  GrayImage image;
+  image.width = spec.width;
+  image.height = spec.height;
+  image.pixels.resize(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height));
+  if (!input.read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+    return makeError(
+        ErrorCode::kInvalidInput,
+        label + ": cannot read pixels: " +
+            cleanMessage(input.geterror() + OIIO::geterror(), "the file is truncated or corrupt"));
+  input.close();
+  STRAHLER_RETURN_IF_ERROR(finishPixels(image, spec.format, label));
+  return image;
+}
+
 base::Result<GrayImage> readGrayImageUnguarded(const std::string& path, std::size_t maxPixels) {
   STRAHLER_RETURN_IF_ERROR(checkReadable(path));
   auto input = OIIO::ImageInput::open(path);
@@ -54,46 +114,7 @@ base::Result<GrayImage> readGrayImageUnguarded(const std::string& path, std::siz
     return makeError(ErrorCode::kInvalidInput,
                      "image " + quoted(path) + ": cannot read: " +
                          cleanMessage(OIIO::geterror(), "unknown image format"));
-  const OIIO::ImageSpec spec = input->spec();
-  if (spec.width <= 0 || spec.height <= 0 || spec.depth < 1 || spec.nchannels < 1)
-    return makeError(ErrorCode::kInvalidInput, "image " + quoted(path) + ": empty image (" +
-                                                   std::to_string(spec.width) + "x" +
-                                                   std::to_string(spec.height) + ")");
-  if (spec.depth != 1)
-    return makeError(ErrorCode::kUnsupported, "image " + quoted(path) + ": volume images (depth " +
-                                                  std::to_string(spec.depth) +
-                                                  ") are not supported");
-  const auto pixelCount =
-      static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height);
-  if (pixelCount > maxPixels)
-    return makeError(ErrorCode::kLimitExceeded,
-                     "image " + quoted(path) + ": " + std::to_string(spec.width) + "x" +
-                         std::to_string(spec.height) + " = " + std::to_string(pixelCount) +
-                         " pixels is more than the limit of " + std::to_string(maxPixels));
-
-  GrayImage image;
-  image.width = spec.width;
-  image.height = spec.height;
-  image.pixels.resize(static_cast<std::size_t>(pixelCount));
-  if (!input->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-    return makeError(
-        ErrorCode::kInvalidInput,
-        "image " + quoted(path) + ": cannot read pixels: " +
-            cleanMessage(input->geterror() + OIIO::geterror(), "the file is truncated or corrupt"));
-  input->close();
-  const bool remap = isSignedInteger(spec.format);
-  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-    float& v = image.pixels[i];
-    if (!std::isfinite(v)) {
-      const auto w = static_cast<std::size_t>(image.width);
-      return makeError(ErrorCode::kInvalidInput,
-                       "image " + quoted(path) + ": pixel (" + std::to_string(i % w) + ", " +
-                           std::to_string(i / w) + ") is not a finite number");
-    }
-    if (remap)
-      v = 0.5f * (v + 1.0f);
-  }
-  return image;
+  return readOpenedImage(*input, "image " + quoted(path), maxPixels);
 }
 
 base::Status writePngUnguarded(const std::string& path, const RgbImage& image) {
@@ -122,6 +143,98 @@ base::Status writePngUnguarded(const std::string& path, const RgbImage& image) {
     return makeError(ErrorCode::kIoError, "png " + quoted(path) + ": cannot write: " +
                                               cleanMessage(output->geterror(), "unknown error"));
   return base::Ok{};
+}
+
+/// OIIO format name, a file name whose extension selects that format, and a message label.
+struct FloatFormatInfo {
+  const char* oiioName;
+  const char* fileName;
+  const char* label;
+};
+
+FloatFormatInfo infoFor(FloatImageFormat format) {
+  switch (format) {
+  case FloatImageFormat::kTiff:
+    return {"tiff", "tile.tif", "float TIFF"};
+  case FloatImageFormat::kExr:
+    return {"openexr", "tile.exr", "float EXR"};
+  }
+  return {"", "", "unknown float image format"};
+}
+
+base::Status checkFloatPixels(const std::vector<float>& pixels, int width, int height,
+                              const char* label) {
+  const std::string what = label;
+  if (width <= 0 || height <= 0)
+    return makeError(ErrorCode::kInvalidInput, what + ": empty image (" + std::to_string(width) +
+                                                   "x" + std::to_string(height) + ")");
+  const std::uint64_t expected =
+      static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  if (pixels.size() != expected)
+    return makeError(ErrorCode::kInvalidInput,
+                     what + ": " + std::to_string(pixels.size()) +
+                         " pixels, expected width*height = " + std::to_string(expected));
+  return base::Ok{};
+}
+
+/// One float32 channel. Deflate at its fastest level: on 256² terrain tiles it keeps TIFFs
+/// 40 % below raw for 2.4 ms (level 6: 5.3 ms for 5 % less); EXR's ZIP gains only ~3 % on
+/// noisy float heights but is what EXR readers expect. "Software" and an empty "DateTime" keep
+/// the bytes free of version strings and clock readings: the same pixels, the same bytes.
+OIIO::ImageSpec floatSpec(int width, int height, FloatImageFormat format) {
+  OIIO::ImageSpec spec(width, height, 1, OIIO::TypeDesc::FLOAT);
+  spec.channelnames = {"Y"};
+  if (format == FloatImageFormat::kTiff) {
+    spec.attribute("compression", "zip");
+    spec.attribute("tiff:zipquality", 1);
+  } else {
+    spec.attribute("compression", "zip:1");
+  }
+  spec.attribute("Software", "strahler");
+  spec.attribute("DateTime", ""); // else OIIO stamps the wall clock into TIFF and EXR headers
+  return spec;
+}
+
+base::Result<std::string> encodeFloatImageUnguarded(const std::vector<float>& pixels, int width,
+                                                    int height, FloatImageFormat format) {
+  const FloatFormatInfo info = infoFor(format);
+  STRAHLER_RETURN_IF_ERROR(checkFloatPixels(pixels, width, height, info.label));
+  auto output = OIIO::ImageOutput::create(info.oiioName);
+  if (!output)
+    return makeError(ErrorCode::kInternal, std::string(info.label) + ": no writer: " +
+                                               cleanMessage(OIIO::geterror(), "unknown error"));
+  // Tiles are encoded on the server's worker pool: no fan-out into OIIO threads.
+  output->threads(1);
+  std::vector<unsigned char> buffer;
+  OIIO::Filesystem::IOVecOutput proxy(buffer);
+  OIIO::Filesystem::IOProxy* proxyPointer = &proxy;
+  OIIO::ImageSpec spec = floatSpec(width, height, format);
+  spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxyPointer);
+  if (!output->open(info.fileName, spec))
+    return makeError(ErrorCode::kInternal, std::string(info.label) + ": cannot open writer: " +
+                                               cleanMessage(output->geterror(), "unknown error"));
+  const bool written = output->write_image(OIIO::TypeDesc::FLOAT, pixels.data());
+  const bool closed = output->close();
+  if (!written || !closed)
+    return makeError(ErrorCode::kInternal, std::string(info.label) + ": cannot write: " +
+                                               cleanMessage(output->geterror(), "unknown error"));
+  return std::string(buffer.begin(), buffer.end());
+}
+
+base::Result<GrayImage> decodeFloatImageUnguarded(const std::string& bytes, FloatImageFormat format,
+                                                  std::size_t maxPixels) {
+  const FloatFormatInfo info = infoFor(format);
+  const std::string label = std::string(info.label) + " in memory";
+  OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
+  OIIO::Filesystem::IOProxy* readerPointer = &reader;
+  OIIO::ImageSpec config;
+  config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &readerPointer);
+  auto input = OIIO::ImageInput::open(info.fileName, &config);
+  if (!input)
+    return makeError(
+        ErrorCode::kInvalidInput,
+        label + ": cannot read: " + cleanMessage(OIIO::geterror(), "not an image of this format"));
+  return readOpenedImage(*input, label, maxPixels);
 }
 
 } // namespace
@@ -171,6 +284,37 @@ base::Status writePng(const std::string& path, const RgbImage& image) {
     return makeError(ErrorCode::kIoError, "png " + quoted(path) + ": " + e.what());
   } catch (...) {
     return makeError(ErrorCode::kInternal, "png " + quoted(path) + ": unknown failure");
+  }
+}
+
+base::Result<std::string> encodeFloatImage(const std::vector<float>& pixels, int width, int height,
+                                           FloatImageFormat format) {
+  try {
+    return encodeFloatImageUnguarded(pixels, width, height, format);
+  } catch (const std::bad_alloc&) {
+    return makeError(ErrorCode::kLimitExceeded,
+                     std::string(infoFor(format).label) + ": out of memory");
+  } catch (const std::exception& e) {
+    return makeError(ErrorCode::kInternal, std::string(infoFor(format).label) + ": " + e.what());
+  } catch (...) {
+    return makeError(ErrorCode::kInternal,
+                     std::string(infoFor(format).label) + ": unknown failure");
+  }
+}
+
+base::Result<GrayImage> decodeFloatImage(const std::string& bytes, FloatImageFormat format,
+                                         std::size_t maxPixels) {
+  try {
+    return decodeFloatImageUnguarded(bytes, format, maxPixels);
+  } catch (const std::bad_alloc&) {
+    return makeError(ErrorCode::kLimitExceeded,
+                     std::string(infoFor(format).label) + " in memory: out of memory");
+  } catch (const std::exception& e) {
+    return makeError(ErrorCode::kInvalidInput,
+                     std::string(infoFor(format).label) + " in memory: " + e.what());
+  } catch (...) {
+    return makeError(ErrorCode::kInternal,
+                     std::string(infoFor(format).label) + " in memory: unknown failure");
   }
 }
 

@@ -6,6 +6,9 @@
 #include "strahler/geometry/polygon_index.h"
 #include "strahler/noise/gradient_noise.h"
 
+#include <cstdint>
+#include <span>
+
 namespace strahler::construction {
 
 /// How the relief meets the sea: a beach ramp on land and a smooth shelf below sea level.
@@ -51,15 +54,36 @@ public:
   /// The full evaluation at p (see height()).
   Evaluation evaluate(geometry::Vec2 p, double spacing) const noexcept;
 
+  /// What a caller knows about where p lies, to skip work that cannot change the result.
+  enum class Coast {
+    kUnknown, ///< Measure the distance to the shore.
+    kInland,  ///< p is on land and at least CoastShape::kBand from any shore.
+    kFarSea,  ///< p is off the land and at least shelfReach() from any shore.
+  };
+
+  /// Distance from the shore beyond which the sea floor is flat, m.
+  static double shelfReach() noexcept;
+
+  /// The evaluation at p from explicit candidate primitives: `terrain` and `rivers` hold
+  /// indices into data().terrain / data().rivers, ascending, and must include every primitive
+  /// whose support contains p (others are harmless). Bit-identical to evaluate(p, spacing).
+  Evaluation evaluateFrom(geometry::Vec2 p, double spacing, std::span<const std::uint32_t> terrain,
+                          std::span<const std::uint32_t> rivers,
+                          Coast coast = Coast::kUnknown) const noexcept;
+
 private:
-  Sample terrainAt(geometry::Vec2 p, double spacing) const noexcept;
-  Sample riversAt(geometry::Vec2 p) const noexcept;
-  double shapeCoast(geometry::Vec2 p, const Sample& terrain, const Sample& rivers) const noexcept;
+  Sample terrainAt(geometry::Vec2 p, double spacing,
+                   std::span<const std::uint32_t> ids) const noexcept;
+  Sample riversAt(geometry::Vec2 p, std::span<const std::uint32_t> ids) const noexcept;
+  double shapeCoast(geometry::Vec2 p, const Sample& terrain, const Sample& rivers,
+                    Coast coast) const noexcept;
 
   WorldData data_;
   geometry::PolygonIndex land_;
   geometry::GridIndex terrainGrid_;
   geometry::GridIndex riverGrid_;
+  std::vector<geometry::Aabb> riverSupport_; // per river primitive: its support box
+  std::vector<double> noiseScale_;           // per terrain primitive: amplitude / Σ_k g^k
   noise::GradientNoise noise_;
 };
 

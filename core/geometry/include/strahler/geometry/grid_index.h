@@ -39,6 +39,11 @@ public:
     forEachCell(box, [&](std::vector<std::uint32_t>& cell) { cell.push_back(id); });
   }
 
+  /// The ids registered in the cell that holds p (clamped to the grid), in insertion order.
+  const std::vector<std::uint32_t>& cellAt(Vec2 p) const noexcept {
+    return cells_[index(cellX(p.x), cellY(p.y))];
+  }
+
   /// Calls fn(id) for every id whose cells meet `box`; stops early if fn returns false.
   template <class Fn> bool query(const Aabb& box, Fn&& fn) const {
     int x0, y0, x1, y1;

@@ -2,6 +2,8 @@
 
 #include "strahler/geometry/vec2.h"
 
+#include <vector>
+
 namespace strahler::geometry {
 
 /// Mean Earth radius (m) of the spherical model used by every projection here.
@@ -19,6 +21,10 @@ public:
   Vec2 forward(Vec2 lonLat) const noexcept;
   /// Local metres to (lon, lat) in degrees.
   Vec2 inverse(Vec2 xy) const noexcept;
+  /// forward() of every (lons[i], lats[j]), row-major (out[j · lons.size() + i]), with the
+  /// trigonometry done once per row and once per column instead of once per point.
+  void forwardGrid(const std::vector<double>& lons, const std::vector<double>& lats,
+                   std::vector<Vec2>& out) const;
   /// The centre (lon0, lat0) in degrees.
   Vec2 center() const noexcept { return {lon0_, lat0_}; }
 

@@ -38,4 +38,22 @@ base::Result<GrayImage> readGrayImage(const std::string& path, std::size_t maxPi
 /// width*height*3, kIoError when the file cannot be written.
 base::Status writePng(const std::string& path, const RgbImage& image);
 
+/// Containers for single-channel float32 images kept in memory (tile bodies).
+enum class FloatImageFormat {
+  kTiff, ///< TIFF, deflate ("zip") compressed, one float32 channel.
+  kExr,  ///< OpenEXR, ZIP compressed (16-scanline blocks), one float32 channel named "Y".
+};
+
+/// Encodes `pixels` (width*height float32 values, row-major, top row first) in memory, stored
+/// bit for bit. kInvalidInput for width or height ≤ 0 or a pixel count other than
+/// width*height; kInternal when OpenImageIO cannot write. Deterministic for one OIIO build.
+base::Result<std::string> encodeFloatImage(const std::vector<float>& pixels, int width, int height,
+                                           FloatImageFormat format);
+
+/// Decodes the first channel of an in-memory image in `format`, with readGrayImage's rules
+/// (float pixels kept as stored, non-finite pixels and more than `maxPixels` refused);
+/// kInvalidInput when the bytes are not a readable image of that format.
+base::Result<GrayImage> decodeFloatImage(const std::string& bytes, FloatImageFormat format,
+                                         std::size_t maxPixels = 64u << 20);
+
 } // namespace strahler::image

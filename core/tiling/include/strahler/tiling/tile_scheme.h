@@ -1,0 +1,87 @@
+#pragma once
+
+#include "strahler/base/result.h"
+#include "strahler/geometry/aabb.h"
+#include "strahler/geometry/projection.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace strahler::tiling {
+
+/// A quadtree tile: zoom z, column x (west to east), row y (north to south, as in XYZ).
+struct TileId {
+  int z = 0;
+  std::int64_t x = 0;
+  std::int64_t y = 0;
+
+  friend bool operator==(const TileId&, const TileId&) = default;
+};
+
+/// Where to sample a tile: points in the world's local frame, row-major.
+struct SampleGrid {
+  int width = 0;
+  int height = 0;
+  std::vector<geometry::Vec2> points; ///< width · height local points.
+  /// Per row: ground distance between neighbouring samples, m (the LOD knob). Constant along
+  /// a row so that tiles sharing a row of samples fade the same noise octaves.
+  std::vector<double> rowSpacing;
+  geometry::Aabb bounds; ///< Bounding box of the points.
+};
+
+/// The two tile pyramids strahler serves.
+enum class SchemeKind {
+  kWebMercator, ///< EPSG:3857 XYZ tiles, for web maps.
+  kLocal,       ///< A metric quadtree over the world's bounding square, for game clients.
+};
+
+/// A tile pyramid over one world: tile bounds and the sample grids of raster and mesh tiles.
+/// Raster tiles sample pixel centres, row 0 north. Mesh tiles sample (n+3)² vertices: the
+/// (n+1)² edge-inclusive vertices of the tile plus a one-vertex border, row 0 south (so that
+/// neighbours share their edge samples exactly).
+class TileScheme {
+public:
+  /// The Web Mercator pyramid (zoom 0..kMaxWebZoom) seen through a world's projection.
+  static TileScheme webMercator(const geometry::LocalProjection& projection);
+  /// The local pyramid over the square of side `rootSide` metres centred on `center`.
+  static TileScheme local(geometry::Vec2 center, double rootSide);
+  /// The local pyramid of a world whose land spans `landBounds`: a square 10 % larger than
+  /// its longer side, zoom levels down to ~0.5 m per sample at 256 samples per tile.
+  static TileScheme localFor(const geometry::Aabb& landBounds);
+
+  /// Deepest Web Mercator zoom served (≈ 0.6 m per pixel at the equator for 256² tiles).
+  static constexpr int kMaxWebZoom = 18;
+
+  /// Which pyramid this is.
+  SchemeKind kind() const noexcept { return kind_; }
+  /// Deepest zoom level.
+  int maxZoom() const noexcept { return maxZoom_; }
+  /// True when the tile exists in this pyramid (zoom in range, x and y in [0, 2^z)).
+  bool contains(const TileId& tile) const noexcept;
+  /// The local square of a LocalQuad tile (kLocal only): its south-west corner and side, m.
+  geometry::Aabb localBounds(const TileId& tile) const noexcept;
+
+  /// Pixel-centre samples of a `size`×`size` raster tile.
+  SampleGrid rasterGrid(const TileId& tile, int size) const;
+  /// Bordered vertex samples of a mesh tile with `quads`×`quads` quads.
+  SampleGrid meshGrid(const TileId& tile, int quads) const;
+  /// The mesh frame of a tile: south-west corner and vertex spacing, in the scheme's own
+  /// metres (local metres for kLocal, EPSG:3857 metres for kWebMercator).
+  std::pair<geometry::Vec2, double> meshFrame(const TileId& tile, int quads) const;
+
+private:
+  // Samples k < count per axis at global index (tile · n + k + first), n samples per tile.
+  SampleGrid webGrid(const TileId& tile, int n, int count, double first, bool northFirst) const;
+  SampleGrid localGrid(const TileId& tile, int n, int count, double first, bool northFirst) const;
+
+  SchemeKind kind_ = SchemeKind::kLocal;
+  int maxZoom_ = 0;
+  geometry::LocalProjection projection_;
+  geometry::Vec2 center_{};
+  double rootSide_ = 1.0;
+};
+
+/// Radius of the spherical Web Mercator (EPSG:3857), m.
+inline constexpr double kWebMercatorRadius = 6378137.0;
+
+} // namespace strahler::tiling

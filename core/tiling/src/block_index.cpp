@@ -1,0 +1,62 @@
+#include "strahler/tiling/block_index.h"
+
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+#include <boost/iterator/function_output_iterator.hpp>
+
+#include <algorithm>
+
+namespace strahler::tiling {
+namespace {
+
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+using Point = bg::model::point<double, 2, bg::cs::cartesian>;
+using Box = bg::model::box<Point>;
+using Entry = std::pair<Box, std::uint32_t>;
+
+Box toBox(const geometry::Aabb& a) {
+  return {{a.min.x, a.min.y}, {a.max.x, a.max.y}};
+}
+
+} // namespace
+
+struct BlockIndex::Tree {
+  bgi::rtree<Entry, bgi::rstar<16>> rtree;
+};
+
+BlockIndex::BlockIndex(const construction::WorldData& world) : tree_(std::make_unique<Tree>()) {
+  influence_.resize(world.blocks.size());
+  std::vector<Entry> entries;
+  for (std::uint32_t b = 0; b < world.blocks.size(); ++b) {
+    const construction::BlockPrimitives& range = world.blocks[b];
+    geometry::Aabb box;
+    for (std::uint32_t i = range.terrainBegin; i < range.terrainEnd; ++i) {
+      const primitives::TerrainPrimitive& t = world.terrain[i];
+      box.add(geometry::Aabb{t.center, t.center}.expanded(t.radius));
+    }
+    for (std::uint32_t i = range.riverBegin; i < range.riverEnd; ++i)
+      box.add(primitives::supportBox(world.rivers[i]));
+    influence_[b] = box;
+    if (!box.empty())
+      entries.emplace_back(toBox(box), b);
+  }
+  tree_->rtree = bgi::rtree<Entry, bgi::rstar<16>>(entries.begin(), entries.end()); // packed
+}
+
+BlockIndex::~BlockIndex() = default;
+BlockIndex::BlockIndex(BlockIndex&&) noexcept = default;
+BlockIndex& BlockIndex::operator=(BlockIndex&&) noexcept = default;
+
+std::vector<std::uint32_t> BlockIndex::blocksMeeting(const geometry::Aabb& box) const {
+  std::vector<std::uint32_t> out;
+  if (box.empty())
+    return out;
+  tree_->rtree.query(bgi::intersects(toBox(box)),
+                     boost::iterators::make_function_output_iterator(
+                         [&](const Entry& e) { out.push_back(e.second); }));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+} // namespace strahler::tiling

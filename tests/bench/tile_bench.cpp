@@ -1,0 +1,83 @@
+// Tile evaluation cost (issue "Tiles"): samples per second per core for 256² heightmap tiles at
+// zoom 0, a middle zoom and the finest zoom, and the same tiles evaluated without the block
+// restriction, in one run. Run: build/release/tests/bench/strahler_tile_bench
+#include "test_worlds.h"
+
+#include "strahler/construction/world_builder.h"
+#include "strahler/tiling/tile_evaluator.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <numeric>
+
+namespace strahler {
+namespace {
+
+struct Fixture {
+  construction::World world;
+  tiling::TileEvaluator evaluator;
+  tiling::TileScheme web;
+  explicit Fixture(construction::WorldData data)
+      : world(std::move(data)), evaluator(world),
+        web(tiling::TileScheme::webMercator(geometry::LocalProjection(
+            world.data().projectionCenter.x, world.data().projectionCenter.y))) {}
+};
+
+const Fixture& fixture() {
+  static const Fixture f(construction::generateWorldData(testing::mallorcaSpec(), "bench").value());
+  return f;
+}
+
+/// A web tile over land at zoom z (Mallorca's centre).
+tiling::TileId tileAt(int z) {
+  const geometry::Vec2 c = fixture().world.data().projectionCenter;
+  const double n = std::ldexp(1.0, z), lat = c.y * M_PI / 180.0;
+  return {z, static_cast<std::int64_t>((c.x + 180.0) / 360.0 * n),
+          static_cast<std::int64_t>((1.0 - std::asinh(std::tan(lat)) / M_PI) / 2.0 * n)};
+}
+
+void BM_TileRestricted(benchmark::State& state) {
+  const Fixture& f = fixture();
+  const tiling::SampleGrid grid = f.web.rasterGrid(tileAt(static_cast<int>(state.range(0))), 256);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(f.evaluator.evaluate(grid));
+  state.counters["samples/s"] = benchmark::Counter(static_cast<double>(grid.points.size()),
+                                                   benchmark::Counter::kIsIterationInvariantRate);
+}
+
+/// The same samples through the whole-world evaluator (World::height, its uniform grid).
+void BM_TileWholeWorld(benchmark::State& state) {
+  const Fixture& f = fixture();
+  const tiling::SampleGrid grid = f.web.rasterGrid(tileAt(static_cast<int>(state.range(0))), 256);
+  for (auto _ : state)
+    for (std::size_t k = 0; k < grid.points.size(); ++k)
+      benchmark::DoNotOptimize(f.world.height(grid.points[k], grid.rowSpacing[k / 256]));
+  state.counters["samples/s"] = benchmark::Counter(static_cast<double>(grid.points.size()),
+                                                   benchmark::Counter::kIsIterationInvariantRate);
+}
+
+/// Naive: every primitive of the world considered for every sample (16×16 samples only).
+void BM_TileAllPrimitives(benchmark::State& state) {
+  const Fixture& f = fixture();
+  const tiling::SampleGrid grid = f.web.rasterGrid(tileAt(static_cast<int>(state.range(0))), 16);
+  std::vector<std::uint32_t> terrain(f.world.data().terrain.size()),
+      rivers(f.world.data().rivers.size());
+  std::iota(terrain.begin(), terrain.end(), 0u);
+  std::iota(rivers.begin(), rivers.end(), 0u);
+  for (auto _ : state)
+    for (std::size_t k = 0; k < grid.points.size(); ++k)
+      benchmark::DoNotOptimize(
+          f.world.evaluateFrom(grid.points[k], grid.rowSpacing[k / 16], terrain, rivers));
+  state.counters["samples/s"] = benchmark::Counter(static_cast<double>(grid.points.size()),
+                                                   benchmark::Counter::kIsIterationInvariantRate);
+}
+
+// Zoom 0 is the whole Earth (Mallorca a few pixels), 9 holds all of Mallorca, 13 is a
+// middle zoom, 18 the finest.
+BENCHMARK(BM_TileRestricted)->Arg(0)->Arg(9)->Arg(13)->Arg(18)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TileWholeWorld)->Arg(0)->Arg(9)->Arg(13)->Arg(18)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TileAllPrimitives)->Arg(13)->Unit(benchmark::kMillisecond);
+
+} // namespace
+} // namespace strahler

@@ -1,0 +1,126 @@
+// Writes real tiles of the default island through the tile service, with the heights the
+// whole-world evaluator (World::height) gives at the same samples, so that the independent
+// decoders in tests/node check our bytes against the terrain itself:
+//   <dir>/heightmaps/<name>.<format>.png + .json   (check_heightmaps.mjs)
+//   <dir>/meshes/<name>.drc, .glb + .json          (check_draco.mjs, validate_glb.mjs)
+#include "test_worlds.h"
+#include "tile_service.h"
+
+#include "strahler/construction/world_builder.h"
+#include "strahler/encoding/mesh.h"
+
+#include <charconv>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace strahler;
+
+std::string number(double v) {
+  char text[32];
+  return std::string(text, std::to_chars(text, text + sizeof text, v).ptr);
+}
+
+template <class T> std::string array(const std::vector<T>& values) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < values.size(); ++i)
+    out += (i ? "," : "") + number(static_cast<double>(values[i]));
+  return out + "]";
+}
+
+bool write(const fs::path& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  return static_cast<bool>(out);
+}
+
+/// Heights of a sample grid from the whole-world evaluator.
+std::vector<double> reference(const construction::World& world, const tiling::SampleGrid& grid) {
+  std::vector<double> h;
+  for (std::size_t k = 0; k < grid.points.size(); ++k)
+    h.push_back(
+        world.height(grid.points[k], grid.rowSpacing[k / static_cast<std::size_t>(grid.width)]));
+  return h;
+}
+
+bool heightmaps(const app::TileService& service, const fs::path& dir, const tiling::TileId& tile,
+                const std::string& name) {
+  const tiling::SampleGrid grid =
+      service.scheme(tiling::SchemeKind::kWebMercator).rasterGrid(tile, 64);
+  std::vector<double> h = reference(service.world(), grid);
+  const std::pair<app::TileFormat, const char*> formats[] = {
+      {app::TileFormat::kTerrainRgb, "terrainrgb"},
+      {app::TileFormat::kTerrarium, "terrarium"},
+      {app::TileFormat::kPng16, "png16"}};
+  for (const auto& [format, label] : formats) {
+    auto rendered = service.render({tiling::SchemeKind::kWebMercator, tile, format, 64});
+    if (!rendered)
+      return false;
+    // The tile stores float32 heights; the reference is the same value before that rounding.
+    std::vector<float> asFloat(h.begin(), h.end());
+    const std::string json = "{\"format\":\"" + std::string(label) +
+                             "\",\"width\":64,\"height\":64,\"heights\":" + array(asFloat) + "}\n";
+    const fs::path stem = dir / (name + "." + label);
+    if (!write(stem.string() + ".png", rendered.value().bytes) ||
+        !write(stem.string() + ".json", json))
+      return false;
+  }
+  return true;
+}
+
+bool meshes(const app::TileService& service, const fs::path& dir, const tiling::TileId& tile,
+            const std::string& name) {
+  const int quads = 32;
+  const tiling::TileScheme& scheme = service.scheme(tiling::SchemeKind::kLocal);
+  const tiling::SampleGrid grid = scheme.meshGrid(tile, quads);
+  encoding::MeshGridInput input;
+  input.quads = quads;
+  std::tie(input.origin, input.spacing) = scheme.meshFrame(tile, quads);
+  const std::vector<double> h = reference(service.world(), grid);
+  input.heights.assign(h.begin(), h.end());
+  input.skirtDepth = std::max(1.0, 0.5 * input.spacing);
+  auto mesh = encoding::buildGridMesh(input);
+  auto drc = service.render({tiling::SchemeKind::kLocal, tile, app::TileFormat::kDraco, quads});
+  auto glb = service.render({tiling::SchemeKind::kLocal, tile, app::TileFormat::kGlb, quads});
+  if (!mesh || !drc || !glb)
+    return false;
+  const std::string json =
+      "{\"name\":\"" + name + "\",\"drc\":\"" + name + ".drc\",\"glb\":\"" + name +
+      ".glb\",\"maxPositionError\":0.01,\"spacing\":" + number(input.spacing) +
+      ",\"hasUv\":true,\"origin\":[" + number(input.origin.x) + "," + number(input.origin.y) +
+      "],\"positions\":" + array(mesh.value().positions) +
+      ",\"indices\":" + array(mesh.value().indices) + "}\n";
+  return write(dir / (name + ".drc"), drc.value().bytes) &&
+         write(dir / (name + ".glb"), glb.value().bytes) && write(dir / (name + ".json"), json);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: write_world_tile_samples DIR\n");
+    return 2;
+  }
+  const fs::path dir = argv[1];
+  fs::remove_all(dir);
+  fs::create_directories(dir / "heightmaps");
+  fs::create_directories(dir / "meshes");
+  const app::TileService service(
+      construction::generateWorldData(testing::defaultIslandSpec(), "samples").value());
+  // Web tiles over the island's centre at a coarse and a fine zoom; local tiles inland and at the
+  // coast.
+  const bool ok = heightmaps(service, dir / "heightmaps", {10, 434, 373}, "island-z10") &&
+                  heightmaps(service, dir / "heightmaps", {13, 3477, 2990}, "island-z13") &&
+                  meshes(service, dir / "meshes", {4, 7, 8}, "local-z4-7-8") &&
+                  meshes(service, dir / "meshes", {3, 0, 3}, "local-z3-0-3");
+  if (!ok) {
+    std::fprintf(stderr, "write_world_tile_samples: could not render or write a tile\n");
+    return 1;
+  }
+  std::printf("wrote real tiles to %s\n", dir.c_str());
+  return 0;
+}

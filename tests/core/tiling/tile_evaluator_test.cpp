@@ -1,0 +1,143 @@
+#include "test_worlds.h"
+
+#include "strahler/base/random.h"
+#include "strahler/construction/world_builder.h"
+#include "strahler/tiling/tile_evaluator.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <thread>
+
+namespace strahler::tiling {
+namespace {
+
+using geometry::Vec2;
+
+const construction::World& islandWorld() {
+  static const construction::World world(
+      construction::generateWorldData(testing::defaultIslandSpec(), "tiles").value());
+  return world;
+}
+
+TileScheme localScheme() {
+  return TileScheme::localFor(islandWorld().land().bounds());
+}
+TileScheme webScheme() {
+  const Vec2 c = islandWorld().data().projectionCenter;
+  return TileScheme::webMercator(geometry::LocalProjection(c.x, c.y));
+}
+
+/// The web tile at zoom z that holds (lon, lat).
+TileId webTileAt(double lon, double lat, int z) {
+  const double n = std::ldexp(1.0, z);
+  const double latRad = lat * M_PI / 180.0;
+  return {z, static_cast<std::int64_t>((lon + 180.0) / 360.0 * n),
+          static_cast<std::int64_t>((1.0 - std::asinh(std::tan(latRad)) / M_PI) / 2.0 * n)};
+}
+
+TEST(TileEvaluator, RestrictedEvaluationEqualsTheWholeWorld) {
+  const construction::World& world = islandWorld();
+  const TileEvaluator evaluator(world);
+  base::Rng rng(5);
+  const TileScheme local = localScheme();
+  const Vec2 c = world.data().projectionCenter;
+  std::size_t compared = 0;
+  for (int t = 0; t < 24; ++t) {
+    const bool web = t % 2 == 1;
+    const int z = web ? 9 + static_cast<int>(rng.below(6)) : 1 + static_cast<int>(rng.below(6));
+    const TileScheme scheme = web ? webScheme() : local;
+    TileId tile = web ? webTileAt(c.x + rng.uniform(-0.3, 0.3), c.y + rng.uniform(-0.15, 0.15), z)
+                      : TileId{z, rng.below(1u << z), rng.below(1u << z)};
+    const SampleGrid grid = t % 3 == 0 ? scheme.meshGrid(tile, 16) : scheme.rasterGrid(tile, 32);
+    TileStats stats;
+    const std::vector<double> fast = evaluator.evaluate(grid, &stats);
+    for (std::size_t k = 0; k < grid.points.size(); ++k) {
+      const double slow = world.height(grid.points[k], grid.rowSpacing[k / grid.width]);
+      ASSERT_NEAR(fast[k], slow, 1e-3) << "tile " << tile.z << "/" << tile.x << "/" << tile.y;
+      ASSERT_EQ(std::memcmp(&fast[k], &slow, sizeof slow), 0) << "not bit-identical";
+      ++compared;
+    }
+    EXPECT_LE(stats.terrainPrimitives, world.data().terrain.size());
+  }
+  EXPECT_GT(compared, 10000u);
+}
+
+TEST(TileEvaluator, SmallTilesGatherFewPrimitives) {
+  const TileEvaluator evaluator(islandWorld());
+  const TileScheme s = localScheme();
+  TileStats stats;
+  const int z = 7;
+  evaluator.evaluate(s.rasterGrid({z, 64, 64}, 64), &stats); // near the centre
+  EXPECT_GT(stats.terrainPrimitives, 0u);
+  EXPECT_LT(stats.terrainPrimitives, islandWorld().data().terrain.size() / 20);
+}
+
+TEST(TileEvaluator, SeaAndOutsideTilesAreValidDepths) {
+  const TileEvaluator evaluator(islandWorld());
+  const TileScheme web = webScheme();
+  for (const TileId tile : {TileId{0, 0, 0}, TileId{8, 0, 0}, TileId{12, 100, 3000}}) {
+    const SampleGrid grid = web.rasterGrid(tile, 16);
+    for (double h : evaluator.evaluate(grid)) {
+      ASSERT_TRUE(std::isfinite(h));
+      ASSERT_LE(h, 2000.0);
+    }
+  }
+  // A tile far out at sea is entirely below sea level.
+  const Vec2 c = islandWorld().data().projectionCenter;
+  for (double h : evaluator.evaluate(web.rasterGrid(webTileAt(c.x + 3.0, c.y, 10), 16)))
+    ASSERT_LT(h, -100.0);
+}
+
+TEST(TileEvaluator, MeshNeighboursShareEdgeHeightsBitForBit) {
+  const TileEvaluator evaluator(islandWorld());
+  const TileScheme s = localScheme();
+  const int z = 6, n = 32, w = n + 3;
+  const TileId a{z, 30, 31}, east{z, 31, 31};
+  const std::vector<double> ha = evaluator.evaluate(s.meshGrid(a, n));
+  const std::vector<double> he = evaluator.evaluate(s.meshGrid(east, n));
+  for (int j = 0; j < w; ++j)
+    ASSERT_EQ(std::memcmp(&ha[j * w + n + 1], &he[j * w + 1], sizeof(double)), 0) << j;
+}
+
+TEST(TileEvaluator, ParentAndChildrenAgreeWithinTheFadedOctaves) {
+  const TileEvaluator evaluator(islandWorld());
+  const TileScheme s = localScheme();
+  const int z = 5, n = 16;
+  const TileId parent{z, 15, 16};
+  const std::vector<double> hp = evaluator.evaluate(s.meshGrid(parent, n));
+  const std::vector<double> hc = evaluator.evaluate(s.meshGrid({z + 1, 30, 33}, n)); // its SW child
+  // The child's vertex (2i, 2j) is the parent's vertex (i, j): same point, finer spacing.
+  double worst = 0.0;
+  for (int j = 0; j <= n / 2; ++j)
+    for (int i = 0; i <= n / 2; ++i)
+      worst = std::max(
+          worst, std::abs(hp[(j + 1) * (n + 3) + i + 1] - hc[(2 * j + 1) * (n + 3) + 2 * i + 1]));
+  // Only octaves between 2 and 4 parent spacings differ; their amplitude here is metres, not tens.
+  EXPECT_LT(worst, 25.0);
+}
+
+TEST(TileEvaluator, SameTilesOnAnyThreadCount) {
+  const TileEvaluator evaluator(islandWorld());
+  const TileScheme s = localScheme();
+  std::vector<TileId> tiles;
+  for (int i = 0; i < 8; ++i)
+    tiles.push_back({5, 12 + i, 14 + i % 3});
+  std::vector<std::vector<double>> sequential;
+  for (const TileId& t : tiles)
+    sequential.push_back(evaluator.evaluate(s.rasterGrid(t, 32)));
+  std::vector<std::vector<double>> parallel(tiles.size());
+  std::vector<std::thread> threads;
+  for (int worker = 0; worker < 4; ++worker)
+    threads.emplace_back([&, worker] {
+      for (std::size_t i = static_cast<std::size_t>(worker); i < tiles.size(); i += 4)
+        parallel[i] = evaluator.evaluate(s.rasterGrid(tiles[i], 32));
+    });
+  for (std::thread& t : threads)
+    t.join();
+  EXPECT_EQ(parallel, sequential);
+}
+
+} // namespace
+} // namespace strahler::tiling
