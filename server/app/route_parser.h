@@ -1,0 +1,26 @@
+#pragma once
+
+#include "strahler/base/result.h"
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace strahler::app {
+
+/// A request target split into decoded path segments and query parameters.
+struct ParsedTarget {
+  std::vector<std::string> segments;        ///< "/worlds/a/tiles" → {"worlds", "a", "tiles"}.
+  std::map<std::string, std::string> query; ///< Decoded; a repeated key keeps the last value.
+};
+
+/// Splits and percent-decodes a request target. kInvalidInput (→ 400) for: not starting
+/// with '/', bad or NUL percent escapes, control characters, "." or ".." segments, empty
+/// segments inside the path.
+base::Result<ParsedTarget> parseTarget(const std::string& target);
+
+/// A decimal integer of at most `maxDigits` digits, no sign, no leading '+' (kInvalidInput).
+base::Result<std::int64_t> parseDecimal(const std::string& text, int maxDigits = 10);
+
+} // namespace strahler::app

@@ -1,0 +1,152 @@
+#include "serve_command.h"
+
+#include "cli_args.h"
+#include "command_support.h"
+#include "http_server.h"
+#include "terminal_progress.h"
+#include "tile_server.h"
+#include "world_loader.h"
+
+#include "strahler/store/world_file.h"
+
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+#include <thread>
+
+namespace strahler::app {
+namespace {
+
+constexpr const char* kServeUsage =
+    "usage: strahler serve [WORLD.world ...] [--coast FILE.geojson [--params FILE.json] [--seed "
+    "N]]\n"
+    "                      [--host 127.0.0.1] [--port 8080] [--threads N] [--workers N]\n"
+    "                      [--cache-mb M] [--cache-dir DIR] [--web-root DIR] [--quiet]\n"
+    "Serves worlds over HTTP: the viewer at /, TileJSON, Web Mercator and local tiles in every\n"
+    "format, rivers.geojson, /health and /metrics. Without a world it loads (or generates)\n"
+    "the world of --coast, or of the default island. SIGINT/SIGTERM drain and stop it.\n";
+
+/// A URL-safe world id from a name: [A-Za-z0-9_-], unique among `taken`.
+std::string worldId(const std::string& name, std::set<std::string>& taken) {
+  std::string id;
+  for (char c : name)
+    id += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '-';
+  if (id.empty())
+    id = "world";
+  std::string unique = id;
+  for (int n = 2; taken.count(unique); ++n)
+    unique = id + "-" + std::to_string(n);
+  taken.insert(unique);
+  return unique;
+}
+
+base::Result<std::vector<std::pair<std::string, construction::WorldData>>>
+loadWorlds(const CliArgs& args) {
+  std::vector<std::pair<std::string, construction::WorldData>> worlds;
+  std::set<std::string> taken;
+  for (const std::string& path : args.positional()) {
+    STRAHLER_ASSIGN_OR_RETURN(construction::WorldData data, store::readWorldFile(path));
+    worlds.emplace_back(worldId(std::filesystem::path(path).stem().string(), taken),
+                        std::move(data));
+  }
+  if (!worlds.empty() && !args.get("--coast"))
+    return worlds;
+  auto seed = args.getU64("--seed");
+  if (!seed)
+    return seed.error();
+  input::WorldSources sources;
+  sources.coastPath = args.get("--coast").value_or("");
+  sources.paramsPath = args.get("--params").value_or("");
+  sources.seed = seed.value();
+  STRAHLER_ASSIGN_OR_RETURN(input::WorldSpec spec, input::loadWorldSpec(sources));
+  TerminalProgress progress(args.has("--quiet"));
+  STRAHLER_ASSIGN_OR_RETURN(LoadedWorld loaded,
+                            loadOrGenerateWorld(spec,
+                                                args.get("--cache-dir").value_or(defaultCacheDir()),
+                                                progress.callback(), nullptr));
+  for (const std::string& warning : loaded.warnings)
+    std::fprintf(stderr, "strahler: warning: %s\n", warning.c_str());
+  worlds.emplace_back(worldId(spec.name, taken), std::move(loaded.data));
+  return worlds;
+}
+
+/// The built viewer next to the program or in the source tree, if any.
+std::string findWebRoot(const CliArgs& args) {
+  if (auto root = args.get("--web-root"))
+    return *root;
+  for (const char* candidate : {"web/dist", "../web/dist", "/usr/share/strahler/web"})
+    if (std::filesystem::exists(std::filesystem::path(candidate) / "index.html"))
+      return candidate;
+  return "";
+}
+
+} // namespace
+
+int runServe(const std::vector<std::string>& raw) {
+  auto parsed = CliArgs::parse("serve", raw,
+                               {"--coast", "--params", "--seed", "--host", "--port", "--threads",
+                                "--workers", "--cache-mb", "--cache-dir", "--web-root"},
+                               {"--quiet", "--help", "-h"});
+  if (!parsed)
+    return usageError(parsed.error(), kServeUsage);
+  const CliArgs& args = parsed.value();
+  if (args.has("--help") || args.has("-h"))
+    return printUsage(kServeUsage);
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  auto port = args.getInt("--port", 0, 65535);
+  auto threads = args.getInt("--threads", 1, 64);
+  auto workers = args.getInt("--workers", 1, 256);
+  auto cacheMb = args.getInt("--cache-mb", 1, 1 << 20);
+  for (const auto* r : {&port, &threads, &workers, &cacheMb})
+    if (!*r)
+      return usageError(r->error(), kServeUsage);
+
+  // Block the stop signals in every thread; the main thread waits for them below.
+  sigset_t stopSignals;
+  sigemptyset(&stopSignals);
+  sigaddset(&stopSignals, SIGINT);
+  sigaddset(&stopSignals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stopSignals, nullptr);
+
+  auto worlds = loadWorlds(args);
+  if (!worlds)
+    return fail(worlds.error());
+  TileServerOptions options;
+  options.workers = static_cast<int>(workers.value().value_or(cores));
+  options.cacheBytes = static_cast<std::size_t>(cacheMb.value().value_or(256)) << 20;
+  options.webRoot = findWebRoot(args);
+  TileServer tiles(std::move(worlds).value(), options);
+
+  http::ServerOptions http;
+  http.host = args.get("--host").value_or("127.0.0.1");
+  http.port = static_cast<std::uint16_t>(port.value().value_or(8080));
+  http.ioThreads = static_cast<int>(threads.value().value_or(cores));
+  http.accessLog = !args.has("--quiet");
+  http::Server server(
+      http,
+      [&tiles](const http::Request& r, std::function<void(http::Response)> done) {
+        tiles.handle(r, std::move(done));
+      },
+      [&tiles](const std::string& route, int status, std::size_t bytes, double ms) {
+        tiles.observe(route, status, bytes, ms);
+      });
+  if (auto started = server.start(); !started)
+    return fail(started.error());
+  std::string ids;
+  for (const std::string& id : tiles.worldIds())
+    ids += (ids.empty() ? "" : ", ") + id;
+  std::printf("strahler: serving %s at http://%s:%u/\n", ids.c_str(), http.host.c_str(),
+              server.port());
+  std::fflush(stdout);
+
+  int signal = 0;
+  sigwait(&stopSignals, &signal);
+  std::printf("strahler: %s received, draining\n", signal == SIGTERM ? "SIGTERM" : "SIGINT");
+  std::fflush(stdout);
+  server.stop(std::chrono::milliseconds(4000));
+  tiles.drain();
+  return 0;
+}
+
+} // namespace strahler::app

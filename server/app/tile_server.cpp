@@ -1,0 +1,397 @@
+#include "tile_server.h"
+
+#include "route_parser.h"
+
+#include "strahler/render/rivers_geojson.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace strahler::app {
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kTileCacheControl = "public, max-age=86400, immutable";
+constexpr int kTileJsonMaxZoom = 16; // DEM detail advertised; deeper tiles are still served
+
+std::string hex64(std::uint64_t v) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(v));
+  return text;
+}
+
+std::uint64_t fnv1a(const std::string& text) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : text)
+    h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+http::Response jsonResponse(const json& body, const std::string& route) {
+  http::Response r;
+  r.headers = {{"Content-Type", "application/json"}, {"Cache-Control", "no-cache"}};
+  r.body = body.dump();
+  r.route = route;
+  return r;
+}
+
+/// The Host header if it looks like a host[:port], else "localhost".
+std::string safeHost(const http::Request& request) {
+  const std::string host = request.header("host");
+  if (host.empty() || host.size() > 255)
+    return "localhost";
+  for (char c : host)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == ':' || c == '-' ||
+          c == '[' || c == ']'))
+      return "localhost";
+  return host;
+}
+
+bool etagMatches(const std::string& ifNoneMatch, const std::string& etag) {
+  if (ifNoneMatch.empty())
+    return false;
+  if (ifNoneMatch == "*")
+    return true;
+  std::stringstream list(ifNoneMatch);
+  std::string item;
+  while (std::getline(list, item, ',')) {
+    const auto b = item.find_first_not_of(" \t");
+    const auto e = item.find_last_not_of(" \t");
+    if (b != std::string::npos && item.substr(b, e - b + 1) == etag)
+      return true;
+  }
+  return false;
+}
+
+const char* staticMime(const std::string& ext) {
+  static const std::map<std::string, const char*> kTypes = {{".html", "text/html; charset=utf-8"},
+                                                            {".js", "text/javascript"},
+                                                            {".mjs", "text/javascript"},
+                                                            {".css", "text/css"},
+                                                            {".json", "application/json"},
+                                                            {".png", "image/png"},
+                                                            {".svg", "image/svg+xml"},
+                                                            {".wasm", "application/wasm"},
+                                                            {".map", "application/json"},
+                                                            {".ico", "image/x-icon"}};
+  const auto it = kTypes.find(ext);
+  return it == kTypes.end() ? nullptr : it->second;
+}
+
+} // namespace
+
+struct TileServer::ServedWorld {
+  std::string id;
+  std::unique_ptr<TileService> tiles;
+  json metadata;
+  std::string rivers;   // GeoJSON text
+  std::string cacheKey; // world's cache key: part of every ETag
+  double bounds[4] = {0, 0, 0, 0};
+  geometry::Vec2 center;
+};
+
+TileServer::TileServer(std::vector<std::pair<std::string, construction::WorldData>> worlds,
+                       TileServerOptions options)
+    : options_(std::move(options)), cache_(options_.cacheBytes),
+      pool_(options_.workers, options_.maxQueued) {
+  for (auto& [id, data] : worlds) {
+    auto w = std::make_unique<ServedWorld>();
+    w->id = id;
+    w->cacheKey = data.cacheKey;
+    const geometry::LocalProjection projection(data.projectionCenter.x, data.projectionCenter.y);
+    geometry::Aabb box;
+    for (const geometry::Polygon& p : data.land)
+      for (geometry::Vec2 v : p.outer)
+        box.add(projection.inverse(v));
+    w->bounds[0] = box.min.x, w->bounds[1] = box.min.y, w->bounds[2] = box.max.x,
+    w->bounds[3] = box.max.y;
+    w->center = data.projectionCenter;
+    w->rivers = render::riversGeoJson(data.network, data.flow, data.riverTypes, projection);
+    w->metadata = {{"id", id},
+                   {"name", data.name},
+                   {"bounds", {w->bounds[0], w->bounds[1], w->bounds[2], w->bounds[3]}},
+                   {"center", {w->center.x, w->center.y}},
+                   {"areaKm2", data.areaKm2()},
+                   {"nodes", data.network.nodes.size()},
+                   {"mouths", data.network.mouths.size()},
+                   {"terrainPrimitives", data.terrain.size()},
+                   {"riverPrimitives", data.rivers.size()},
+                   {"seed", data.params.seed},
+                   {"generatorVersion", data.generatorVersion},
+                   {"cacheKey", data.cacheKey}};
+    w->tiles = std::make_unique<TileService>(std::move(data));
+    const tiling::TileScheme& local = w->tiles->scheme(tiling::SchemeKind::kLocal);
+    const geometry::Aabb root = local.localBounds({0, 0, 0});
+    w->metadata["web"] = {{"minzoom", 0}, {"maxzoom", tiling::TileScheme::kMaxWebZoom}};
+    w->metadata["local"] = {{"minzoom", 0},
+                            {"maxzoom", local.maxZoom()},
+                            {"rootSouthWest", {root.min.x, root.min.y}},
+                            {"rootSide", root.size().x}};
+    worlds_.push_back(std::move(w));
+  }
+}
+
+TileServer::~TileServer() {
+  pool_.drain();
+}
+
+void TileServer::drain() {
+  pool_.drain();
+}
+
+std::vector<std::string> TileServer::worldIds() const {
+  std::vector<std::string> ids;
+  for (const auto& w : worlds_)
+    ids.push_back(w->id);
+  return ids;
+}
+
+const TileServer::ServedWorld* TileServer::find(const std::string& id) const {
+  for (const auto& w : worlds_)
+    if (w->id == id)
+      return w.get();
+  return nullptr;
+}
+
+void TileServer::observe(const std::string& route, int status, std::size_t, double ms) {
+  metrics_.recordRequest(route, status, ms);
+}
+
+std::string TileServer::gauges() const {
+  const service::TileCacheStats s = cache_.stats();
+  std::string g;
+  auto gauge = [&](const char* name, const char* help, const char* type, double v) {
+    g += std::string("# HELP ") + name + " " + help + "\n# TYPE " + name + " " + type + "\n" +
+         name + " " + std::to_string(v) + "\n";
+  };
+  gauge("strahler_tile_cache_hits_total", "Tile cache hits.", "counter", double(s.hits));
+  gauge("strahler_tile_cache_misses_total", "Tile cache misses.", "counter", double(s.misses));
+  gauge("strahler_tile_cache_evictions_total", "Tiles evicted from the cache.", "counter",
+        double(s.evictions));
+  gauge("strahler_tile_cache_bytes", "Bytes held by the tile cache.", "gauge", double(s.bytes));
+  gauge("strahler_tile_cache_max_bytes", "Byte bound of the tile cache.", "gauge",
+        double(cache_.maxBytes()));
+  gauge("strahler_tile_cache_entries", "Tiles held by the tile cache.", "gauge", double(s.entries));
+  gauge("strahler_tiles_in_flight", "Distinct tiles being computed.", "gauge", double(s.inFlight));
+  gauge("strahler_tile_computations_total", "Tiles computed (single flight: once per key).",
+        "counter", double(s.computations));
+  gauge("strahler_tile_requests_coalesced_total",
+        "Requests that waited for a computation in flight.", "counter", double(s.coalesced));
+  gauge("strahler_worker_queue_depth", "Tile computations waiting for a worker.", "gauge",
+        double(pool_.queued()));
+  gauge("strahler_workers_busy", "Workers computing a tile.", "gauge", double(pool_.running()));
+  return g;
+}
+
+http::Response TileServer::index() const {
+  if (!options_.webRoot.empty()) {
+    std::ifstream in(std::filesystem::path(options_.webRoot) / "index.html", std::ios::binary);
+    if (in) {
+      http::Response r;
+      r.headers = {{"Content-Type", "text/html; charset=utf-8"}, {"Cache-Control", "no-cache"}};
+      r.body.assign(std::istreambuf_iterator<char>(in), {});
+      r.route = "viewer";
+      return r;
+    }
+  }
+  std::string list;
+  for (const auto& w : worlds_)
+    list += "<li><b>" + w->id + "</b>: <a href=\"/worlds/" + w->id +
+            "\">metadata</a>, <a href=\"/worlds/" + w->id +
+            "/tilejson.json\">TileJSON</a>, <a href=\"/worlds/" + w->id +
+            "/rivers.geojson\">rivers</a>, <a href=\"/worlds/" + w->id +
+            "/local/0/0/0.png\">local tile 0/0/0</a></li>";
+  http::Response r;
+  r.headers = {{"Content-Type", "text/html; charset=utf-8"}, {"Cache-Control", "no-cache"}};
+  r.body = "<!doctype html><html><head><meta charset=\"utf-8\"><title>strahler</title></head><body>"
+           "<h1>strahler tile server</h1><p>Worlds:</p><ul>" +
+           list +
+           "</ul><p>Tiles: <code>/worlds/{id}/tiles/{z}/{x}/{y}.{png|png16|tif|exr|drc|glb}</code> "
+           "(Web Mercator), "
+           "<code>/worlds/{id}/local/{z}/{x}/{y}.{ext}</code> (local quadtree). "
+           "<a href=\"/health\">health</a>, <a href=\"/metrics\">metrics</a>.</p></body></html>";
+  r.route = "viewer";
+  return r;
+}
+
+http::Response TileServer::worldList(const http::Request&) const {
+  json list = json::array();
+  for (const auto& w : worlds_)
+    list.push_back(w->metadata);
+  return jsonResponse(list, "worlds");
+}
+
+http::Response TileServer::tileJson(const ServedWorld& w, const http::Request& request) const {
+  const std::string base = "http://" + safeHost(request) + "/worlds/" + w.id;
+  const json tj = {{"tilejson", "3.0.0"},
+                   {"name", w.id},
+                   {"description", "strahler terrain (Terrain-RGB heightmap)"},
+                   {"version", "1.0.0"},
+                   {"scheme", "xyz"},
+                   {"tiles", {base + "/tiles/{z}/{x}/{y}.png"}},
+                   {"minzoom", 0},
+                   {"maxzoom", kTileJsonMaxZoom},
+                   {"bounds", {w.bounds[0], w.bounds[1], w.bounds[2], w.bounds[3]}},
+                   {"center", {w.center.x, w.center.y, 9}},
+                   {"tileSize", 256},
+                   {"encoding", "mapbox"},
+                   {"attribution", "strahler"}};
+  return jsonResponse(tj, "tilejson");
+}
+
+void TileServer::handle(const http::Request& request, std::function<void(http::Response)> done) {
+  auto parsed = parseTarget(request.target);
+  if (!parsed)
+    return done(http::errorResponse(400, parsed.error().message));
+  const std::vector<std::string>& s = parsed.value().segments;
+  if (s.empty())
+    return done(index());
+  if (s.size() == 1 && s[0] == "health")
+    return done(jsonResponse({{"status", "ok"}, {"worlds", worlds_.size()}}, "health"));
+  if (s.size() == 1 && s[0] == "metrics") {
+    http::Response r;
+    r.headers = {{"Content-Type", "text/plain; version=0.0.4"}, {"Cache-Control", "no-store"}};
+    r.body = metrics_.render(gauges());
+    r.route = "metrics";
+    return done(std::move(r));
+  }
+  if (s[0] == "worlds") {
+    if (s.size() == 1)
+      return done(worldList(request));
+    const ServedWorld* w = find(s[1]);
+    if (!w)
+      return done(http::errorResponse(404, "unknown world '" + s[1].substr(0, 64) + "'"));
+    if (s.size() == 2)
+      return done(jsonResponse(w->metadata, "world"));
+    if (s.size() == 3 && s[2] == "tilejson.json")
+      return done(tileJson(*w, request));
+    if (s.size() == 3 && s[2] == "rivers.geojson") {
+      http::Response r;
+      r.headers = {{"Content-Type", "application/geo+json"},
+                   {"Cache-Control", "public, max-age=3600"}};
+      r.body = w->rivers;
+      r.route = "rivers";
+      return done(std::move(r));
+    }
+    if (s.size() == 6 && (s[2] == "tiles" || s[2] == "local"))
+      return tile(*w,
+                  s[2] == "local" ? tiling::SchemeKind::kLocal : tiling::SchemeKind::kWebMercator,
+                  s, parsed.value().query, request, std::move(done));
+    return done(http::errorResponse(404, "no such resource under /worlds/" + w->id));
+  }
+  // Static files of the viewer.
+  if (!options_.webRoot.empty()) {
+    std::filesystem::path file(options_.webRoot);
+    for (const std::string& part : s)
+      file /= part;
+    const char* mime = staticMime(file.extension().string());
+    std::ifstream in(file, std::ios::binary);
+    if (mime && in && std::filesystem::is_regular_file(file)) {
+      http::Response r;
+      r.headers = {{"Content-Type", mime}, {"Cache-Control", "public, max-age=300"}};
+      r.body.assign(std::istreambuf_iterator<char>(in), {});
+      r.route = "static";
+      return done(std::move(r));
+    }
+  }
+  done(http::errorResponse(404, "not found"));
+}
+
+void TileServer::tile(const ServedWorld& w, tiling::SchemeKind scheme,
+                      const std::vector<std::string>& s,
+                      const std::map<std::string, std::string>& query, const http::Request& request,
+                      std::function<void(http::Response)> done) {
+  const std::string& last = s[5];
+  const std::size_t dot = last.find('.');
+  if (dot == std::string::npos)
+    return done(http::errorResponse(400, "tile name must be {y}.{format}"));
+  auto z = parseDecimal(s[3], 2), x = parseDecimal(s[4], 10),
+       y = parseDecimal(last.substr(0, dot), 10);
+  for (auto* v : {&z, &x, &y})
+    if (!*v)
+      return done(http::errorResponse(400, "tile coordinate " + v->error().message));
+  std::string formatName = last.substr(dot + 1);
+  if (const auto e = query.find("encoding"); e != query.end()) {
+    if (formatName != "png" || (e->second != "terrarium" && e->second != "mapbox"))
+      return done(
+          http::errorResponse(400, "encoding must be 'mapbox' or 'terrarium', for png tiles"));
+    if (e->second == "terrarium")
+      formatName = "terrarium";
+  }
+  auto format = parseTileFormat(formatName);
+  if (!format)
+    return done(http::errorResponse(400, format.error().message));
+  int size = 0;
+  if (const auto q = query.find("size"); q != query.end()) {
+    auto v = parseDecimal(q->second, 4);
+    if (!v)
+      return done(http::errorResponse(400, "size " + v.error().message));
+    size = static_cast<int>(v.value());
+    const bool mesh = isMeshFormat(format.value());
+    const int lo = mesh ? TileSizes::kMeshMin : TileSizes::kRasterMin;
+    const int hi = mesh ? TileSizes::kMeshMax : TileSizes::kRasterMax;
+    if (size < lo || size > hi)
+      return done(http::errorResponse(400, "size must be in [" + std::to_string(lo) + ", " +
+                                               std::to_string(hi) + "]"));
+  }
+  const TileRequest req{
+      scheme, {static_cast<int>(z.value()), x.value(), y.value()}, format.value(), size};
+  if (!w.tiles->scheme(scheme).contains(req.tile))
+    return done(http::errorResponse(404, "tile " + s[3] + "/" + s[4] + "/" + last.substr(0, dot) +
+                                             " is outside the grid (zoom 0.." +
+                                             std::to_string(w.tiles->scheme(scheme).maxZoom()) +
+                                             ")"));
+  const std::string key = w.id + "|" + s[2] + "|" + s[3] + "|" + s[4] + "|" + last.substr(0, dot) +
+                          "|" + formatName + "|" + std::to_string(size);
+  const std::string etag = "\"" + hex64(fnv1a(w.cacheKey + "|" + key)) + "\"";
+  if (etagMatches(request.header("if-none-match"), etag)) {
+    http::Response r;
+    r.status = 304;
+    r.headers = {{"ETag", etag}, {"Cache-Control", kTileCacheControl}};
+    r.route = "tile";
+    return done(std::move(r));
+  }
+  const TileService* service = w.tiles.get();
+  auto compute = [this, service, req, etag]() -> service::TileCache::Outcome {
+    auto rendered = service->render(req);
+    if (!rendered)
+      return {nullptr, rendered.error().code == base::ErrorCode::kNotFound ? 404 : 500,
+              rendered.error().message};
+    metrics_.recordTile(rendered.value().evaluateMs, rendered.value().encodeMs);
+    auto t = std::make_shared<service::CachedTile>();
+    t->bytes = std::move(rendered.value().bytes);
+    t->mimeType = rendered.value().mimeType;
+    t->etag = etag;
+    t->evaluateMs = rendered.value().evaluateMs;
+    t->encodeMs = rendered.value().encodeMs;
+    return {std::move(t), 0, {}};
+  };
+  cache_.get(
+      key, compute, [this](std::function<void()> work) { return pool_.submit(std::move(work)); },
+      [this, done = std::move(done)](const service::TileCache::Outcome& outcome) {
+        if (!outcome.tile) {
+          http::Response r = http::errorResponse(outcome.errorStatus, outcome.errorMessage);
+          if (outcome.errorStatus == 503)
+            r.headers.emplace_back("Retry-After", "1");
+          r.route = "tile";
+          return done(std::move(r));
+        }
+        const service::CachedTile& t = *outcome.tile;
+        http::Response r;
+        r.headers = {{"Content-Type", t.mimeType},
+                     {"ETag", t.etag},
+                     {"Cache-Control", kTileCacheControl},
+                     {"Server-Timing", "eval;dur=" + std::to_string(t.evaluateMs) +
+                                           ", encode;dur=" + std::to_string(t.encodeMs)}};
+        r.body = t.bytes;
+        r.route = "tile";
+        done(std::move(r));
+      });
+}
+
+} // namespace strahler::app

@@ -1,0 +1,71 @@
+#pragma once
+
+#include "http_types.h"
+#include "metrics.h"
+#include "tile_cache.h"
+#include "tile_service.h"
+#include "worker_pool.h"
+
+#include "strahler/construction/world_data.h"
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace strahler::app {
+
+/// Settings of the tile server's work side.
+struct TileServerOptions {
+  int workers = 2;                     ///< Threads computing tiles.
+  std::size_t maxQueued = 256;         ///< Tile computations waiting before 503.
+  std::size_t cacheBytes = 256u << 20; ///< Byte bound of the encoded-tile LRU.
+  std::string webRoot;                 ///< Folder of the built viewer (index.html); "" if none.
+};
+
+/// The endpoints of DESIGN.md's server contract over a set of worlds: /, /worlds,
+/// /worlds/{id}, tilejson.json, tiles (Web Mercator and local), rivers.geojson, /health and
+/// /metrics. Tiles are computed on a bounded worker pool through a single-flight LRU cache;
+/// everything else is answered on the calling (I/O) thread. Thread-safe.
+class TileServer {
+public:
+  /// A server over `worlds` (id, data); ids must be unique URL segments.
+  TileServer(std::vector<std::pair<std::string, construction::WorldData>> worlds,
+             TileServerOptions options);
+  ~TileServer();
+
+  /// The http::Handler: answers `request` through `done`.
+  void handle(const http::Request& request, std::function<void(http::Response)> done);
+  /// The http::RequestObserver: records a finished request in the metrics.
+  void observe(const std::string& route, int status, std::size_t bytes, double ms);
+  /// Waits for queued tile computations to finish (graceful shutdown).
+  void drain();
+
+  /// The world ids served, in order.
+  std::vector<std::string> worldIds() const;
+  /// The metrics (for tests).
+  const service::Metrics& metrics() const noexcept { return metrics_; }
+  /// The tile cache (for tests).
+  const service::TileCache& cache() const noexcept { return cache_; }
+
+private:
+  struct ServedWorld;
+  const ServedWorld* find(const std::string& id) const;
+  http::Response index() const;
+  http::Response worldList(const http::Request& request) const;
+  http::Response tileJson(const ServedWorld& world, const http::Request& request) const;
+  void tile(const ServedWorld& world, tiling::SchemeKind scheme,
+            const std::vector<std::string>& segments,
+            const std::map<std::string, std::string>& query, const http::Request& request,
+            std::function<void(http::Response)> done);
+  std::string gauges() const;
+
+  std::vector<std::unique_ptr<ServedWorld>> worlds_;
+  TileServerOptions options_;
+  service::Metrics metrics_;
+  service::TileCache cache_;
+  service::WorkerPool pool_;
+};
+
+} // namespace strahler::app

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace strahler::http {
+
+/// A request as the handler sees it: method and target already validated by the server
+/// (GET or HEAD only; HEAD arrives as "GET" with `head` set), headers lower-cased.
+struct Request {
+  std::string method; ///< "GET".
+  bool head = false;  ///< True when the client sent HEAD: the server drops the body.
+  std::string target; ///< Raw request target, e.g. "/worlds/default/tiles/3/4/2.png?size=512".
+  std::vector<std::pair<std::string, std::string>> headers; ///< Lower-cased names.
+
+  /// Value of header `name` (lower-case), or empty.
+  std::string header(const std::string& name) const {
+    for (const auto& [k, v] : headers)
+      if (k == name)
+        return v;
+    return {};
+  }
+};
+
+/// A response; the server adds Date, Server, Content-Length, CORS and connection headers.
+struct Response {
+  int status = 200;
+  std::vector<std::pair<std::string, std::string>> headers; ///< e.g. Content-Type, ETag.
+  std::string body;
+  std::string route = "other"; ///< Label for metrics ("tile", "tilejson", "health", ...).
+  bool close = false;          ///< Close the connection after this response.
+};
+
+/// Builds a JSON error response {"error": message} with `status`, Content-Type
+/// application/json, route "error", and Cache-Control: no-store when status >= 500. The message
+/// is JSON-escaped (invalid UTF-8 becomes U+FFFD), so it may quote client input.
+Response errorResponse(int status, const std::string& message);
+
+/// Asynchronous request handler: call `done` exactly once, from any thread, inline or later.
+/// A handler that never calls it leaves its connection waiting (Server::stop() gives up on it
+/// after the drain time); calling it twice is a bug that asserts in debug builds and is ignored
+/// otherwise. An exception thrown by the handler becomes a 500 (unless `done` was called).
+using Handler = std::function<void(const Request&, std::function<void(Response)> done)>;
+
+/// Called once per finished request, on an I/O thread, after the response was written: route
+/// label ("error" for the server's own error answers, "options" for preflights), status, body
+/// bytes sent (0 for HEAD), milliseconds from the complete request header to the written
+/// response. Also called with ("error", 503, ...) for connections refused at the cap.
+using RequestObserver =
+    std::function<void(const std::string& route, int status, std::size_t bytes, double ms)>;
+
+} // namespace strahler::http

@@ -1,0 +1,51 @@
+#pragma once
+
+#include "net.h"
+#include "server_state.h"
+
+#include "strahler/base/result.h"
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+
+namespace strahler::http::detail {
+
+/// Pause before accepting again after accept() failed (EMFILE, ENFILE, ENOBUFS, ...): the
+/// listening socket stays readable, so retrying at once would spin.
+inline constexpr std::chrono::milliseconds kAcceptRetryDelay{50};
+
+/// Accepts connections and starts a Session for each; beyond maxConnections, or while the server
+/// drains, a connection gets a 503 with Retry-After: 1 and is closed at once. Runs on its own
+/// strand.
+class Listener : public std::enable_shared_from_this<Listener> {
+public:
+  /// A listener whose sessions share `state`.
+  explicit Listener(std::shared_ptr<ServerState> state);
+
+  /// Opens, binds and listens on `endpoint`; kIoError with the reason when that fails.
+  base::Status open(const tcp::endpoint& endpoint);
+  /// The bound port (after open()).
+  std::uint16_t port() const noexcept { return port_; }
+  /// Starts the accept loop.
+  void run();
+  /// Stops accepting (asynchronously, on the listener's strand).
+  void stop();
+  /// Closes the acceptor now. Only when no I/O thread runs.
+  void closeNow() noexcept;
+
+private:
+  void doAccept();
+  void onAccept(ErrorCode ec, tcp::socket socket);
+  void onAcceptError(const ErrorCode& ec);
+  void refuse(tcp::socket socket, const char* reason) noexcept;
+
+  std::shared_ptr<ServerState> state_;
+  tcp::acceptor acceptor_;
+  net::steady_timer retryTimer_;
+  std::uint16_t port_ = 0;
+  bool stopped_ = false;
+  bool failing_ = false; ///< accept() failed last time; the failure was reported once.
+};
+
+} // namespace strahler::http::detail

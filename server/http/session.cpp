@@ -1,0 +1,384 @@
+#include "session.h"
+
+#include "request_rules.h"
+#include "wire_response.h"
+
+#include <boost/asio/dispatch.hpp>
+#include <boost/beast/core/bind_handler.hpp>
+#include <boost/beast/http/error.hpp>
+#include <boost/beast/http/read.hpp>
+#include <boost/beast/http/write.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cassert>
+#include <cstdio>
+#include <exception>
+#include <limits>
+
+namespace strahler::http::detail {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Bytes asked for while waiting for the next keep-alive request, and per discard read.
+constexpr std::size_t kReadChunkBytes = 4096;
+/// After a closing response the server drains what the client still sends (so that the
+/// kernel does not answer it with a reset that could destroy the response), for at most this
+/// long and this many bytes.
+constexpr Clock::duration kLingerTimeout = std::chrono::milliseconds(500);
+constexpr Clock::duration kDrainingLingerTimeout = std::chrono::milliseconds(100);
+constexpr std::size_t kMaxLingerBytes = 64 * 1024;
+
+/// A parser error that deserves an answer; end of stream and a truncated message (the peer
+/// closed) and socket errors do not.
+bool isParseError(const ErrorCode& ec) {
+  static const auto& category = bhttp::make_error_code(bhttp::error::bad_target).category();
+  return ec.category() == category && ec != bhttp::error::end_of_stream &&
+         ec != bhttp::error::partial_message;
+}
+
+Request makeRequest(const bhttp::request_header<>& header, bool head) {
+  Request request;
+  request.method = "GET";
+  request.head = head;
+  request.target = std::string(header.target());
+  for (const auto& field : header) {
+    std::string name(field.name_string());
+    std::transform(name.begin(), name.end(), name.begin(), [](char c) {
+      return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+    });
+    request.headers.emplace_back(std::move(name), std::string(field.value()));
+  }
+  return request;
+}
+
+} // namespace
+
+Session::Session(std::shared_ptr<ServerState> state, tcp::socket socket)
+    : state_(std::move(state)), options_(state_->options()), socket_(std::move(socket)),
+      executor_(socket_.get_executor()), readTimer_(executor_), writeTimer_(executor_) {}
+
+Session::~Session() {
+  state_->remove(this);
+}
+
+void Session::start() {
+  ErrorCode ignored;
+  // Responses are written whole (one gather write each); Nagle would only delay pipelined ones.
+  socket_.set_option(tcp::no_delay(true), ignored);
+  state_->add(shared_from_this());
+  net::dispatch(executor_, [self = shared_from_this()] { self->doRead(); });
+}
+
+void Session::drain() {
+  net::post(executor_, [self = shared_from_this()] { self->onDrain(); });
+}
+
+void Session::forceClose() {
+  net::post(executor_, [self = shared_from_this()] { self->closeNow(); });
+}
+
+void Session::closeNow() noexcept {
+  if (closed_)
+    return;
+  closed_ = closing_ = true;
+  ErrorCode ignored;
+  socket_.shutdown(tcp::socket::shutdown_both, ignored);
+  socket_.close(ignored);
+  cancelReadTimer();
+  cancelWriteTimer();
+  queue_.clear();
+  state_->remove(this);
+}
+
+// ---- reading -------------------------------------------------------------------------------
+
+void Session::doRead() {
+  if (closing_ || reading_ || queue_.size() >= options_.maxPipelined)
+    return;
+  reading_ = true;
+  parser_.emplace();
+  parser_->header_limit(static_cast<std::uint32_t>(
+      std::min<std::size_t>(options_.maxHeaderBytes, std::numeric_limits<std::uint32_t>::max())));
+  // No body is ever read, so the body limit is only a formality: checkRequest() answers any
+  // announced body with the right status. (boost::none would fail even Content-Length: 0.)
+  parser_->body_limit(std::numeric_limits<std::uint64_t>::max());
+  if (buffer_.size() == 0 && !firstRequest_)
+    return waitForRequest();
+  readHeader();
+}
+
+void Session::waitForRequest() {
+  armReadTimer(options_.idleTimeout);
+  socket_.async_read_some(buffer_.prepare(kReadChunkBytes),
+                          beast::bind_front_handler(&Session::onRequestStart, shared_from_this()));
+}
+
+void Session::onRequestStart(ErrorCode ec, std::size_t bytes) {
+  if (ec)
+    return onReadFailed(ec);
+  buffer_.commit(bytes);
+  if (stopReadingIfClosing())
+    return;
+  readHeader();
+}
+
+void Session::readHeader() {
+  armReadTimer(options_.headerTimeout);
+  bhttp::async_read_header(socket_, buffer_, *parser_,
+                           beast::bind_front_handler(&Session::onHeader, shared_from_this()));
+}
+
+void Session::onHeader(ErrorCode ec, std::size_t /*bytes*/) {
+  if (ec)
+    return onReadFailed(ec);
+  if (stopReadingIfClosing())
+    return;
+  reading_ = false;
+  cancelReadTimer();
+  firstRequest_ = false;
+  dispatch();
+  doRead();
+}
+
+/// A read completed after the session decided to stop reading (drain, close, linger): the
+/// request is not answered.
+bool Session::stopReadingIfClosing() {
+  if (!closing_)
+    return false;
+  reading_ = false;
+  cancelReadTimer();
+  if (lingering_) {
+    closeNow();
+  } else {
+    closeIfIdle();
+  }
+  return true;
+}
+
+void Session::onReadFailed(const ErrorCode& ec) {
+  reading_ = false;
+  cancelReadTimer();
+  if (closed_)
+    return;
+  if (!lingering_ && isParseError(ec))
+    return answerParseError(ec);
+  // The peer closed or reset the connection, or it timed out: answer what is owed, then close.
+  closing_ = true;
+  if (lingering_)
+    return closeNow();
+  closeIfIdle();
+}
+
+// ---- answering -----------------------------------------------------------------------------
+
+void Session::dispatch() {
+  const auto& header = parser_->get();
+  Verdict verdict = checkRequest(*parser_, options_);
+  const bool head = header.method() == bhttp::verb::head;
+  const Exchange& exchange =
+      enqueue(std::string(header.method_string()), std::string(header.target()), header.version(),
+              head, header.keep_alive() && !verdict.close);
+  if (!exchange.keepAlive)
+    closing_ = true;
+  if (verdict.kind == Verdict::Kind::kForward)
+    return callHandler(exchange.sequence, makeRequest(header, head));
+  answer(exchange.sequence, std::move(verdict.response));
+}
+
+void Session::answerParseError(const ErrorCode& ec) {
+  const std::string_view received(static_cast<const char*>(buffer_.data().data()), buffer_.size());
+  Verdict verdict = checkParseError(ec, *parser_, received, options_);
+  const auto& header = parser_->get();
+  const Exchange& exchange =
+      enqueue(std::string(header.method_string()), std::string(header.target()), 11, false, false);
+  closing_ = true;
+  answer(exchange.sequence, std::move(verdict.response));
+}
+
+Session::Exchange& Session::enqueue(std::string method, std::string target, unsigned version,
+                                    bool head, bool keepAlive) {
+  Exchange& exchange = queue_.emplace_back();
+  exchange.sequence = nextSequence_++;
+  exchange.method = std::move(method);
+  exchange.target = std::move(target);
+  exchange.version = version == 10 ? 10 : 11;
+  exchange.head = head;
+  exchange.keepAlive = keepAlive;
+  exchange.start = Clock::now();
+  return exchange;
+}
+
+void Session::callHandler(std::uint64_t sequence, const Request& request) {
+  // `done` may be called from any thread, at most once; the flag also keeps a handler that
+  // calls `done` and then throws from being answered twice.
+  auto called = std::make_shared<std::atomic<bool>>(false);
+  auto done = [self = shared_from_this(), sequence, called](Response response) {
+    const bool again = called->exchange(true);
+    assert(!again && "http::Handler called done twice");
+    if (!again)
+      self->postAnswer(sequence, std::move(response));
+  };
+  try {
+    state_->handler()(request, std::move(done));
+    return;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "strahler: handler threw for %.200s: %s\n", request.target.c_str(),
+                 e.what());
+  } catch (...) {
+    std::fprintf(stderr, "strahler: handler threw for %.200s\n", request.target.c_str());
+  }
+  if (!called->exchange(true))
+    answer(sequence, errorResponse(500, "internal server error"));
+}
+
+void Session::postAnswer(std::uint64_t sequence, Response response) {
+  state_->postThroughGate(executor_,
+                          [self = shared_from_this(), sequence, r = std::move(response)]() mutable {
+                            self->answer(sequence, std::move(r));
+                          });
+}
+
+void Session::answer(std::uint64_t sequence, Response response) {
+  if (closed_ || queue_.empty() || sequence < queue_.front().sequence)
+    return;
+  const std::uint64_t index = sequence - queue_.front().sequence;
+  if (index >= queue_.size())
+    return;
+  Exchange& exchange = queue_[static_cast<std::size_t>(index)];
+  if (exchange.message)
+    return;
+  if (response.close) {
+    exchange.keepAlive = false;
+    closing_ = true;
+  }
+  exchange.route = response.route;
+  exchange.message = toWireResponse(std::move(response), exchange.version, exchange.head);
+  maybeWrite();
+}
+
+// ---- writing -------------------------------------------------------------------------------
+
+void Session::maybeWrite() {
+  if (writing_ || closed_ || queue_.empty() || !queue_.front().message)
+    return;
+  Exchange& exchange = queue_.front();
+  if (state_->draining() && queue_.size() == 1)
+    exchange.keepAlive = false;
+  exchange.message->keep_alive(exchange.keepAlive);
+  writing_ = true;
+  armWriteTimer();
+  bhttp::async_write(socket_, *exchange.message,
+                     [self = shared_from_this(), message = exchange.message](
+                         ErrorCode ec, std::size_t /*bytes*/) { self->onWrite(ec); });
+}
+
+void Session::onWrite(ErrorCode ec) {
+  writing_ = false;
+  cancelWriteTimer();
+  if (closed_ || queue_.empty())
+    return;
+  const Exchange exchange = std::move(queue_.front());
+  queue_.pop_front();
+  record(exchange, !ec);
+  if (ec)
+    return closeNow();
+  if (!exchange.keepAlive)
+    return linger();
+  maybeWrite();
+  if (closing_)
+    return closeIfIdle();
+  doRead(); // resumes reading if the pipelining cap had paused it
+}
+
+void Session::record(const Exchange& exchange, bool sent) noexcept {
+  const double ms =
+      std::chrono::duration<double, std::milli>(Clock::now() - exchange.start).count();
+  const std::size_t bytes = sent ? exchange.message->body().size() : 0;
+  state_->record(exchange.method, exchange.target, exchange.route, exchange.message->result_int(),
+                 bytes, ms);
+}
+
+/// After the last response: shut the send side and read until the client closes, so that
+/// unread request bytes do not turn the close into a reset that could discard the response.
+void Session::linger() {
+  closing_ = lingering_ = true;
+  queue_.clear(); // requests pipelined after a closing response are not answered
+  ErrorCode ignored;
+  socket_.shutdown(tcp::socket::shutdown_send, ignored);
+  armReadTimer(state_->draining() ? kDrainingLingerTimeout : kLingerTimeout);
+  if (!reading_)
+    discard(); // otherwise the pending read's completion closes
+}
+
+void Session::discard() {
+  reading_ = true;
+  buffer_.clear();
+  socket_.async_read_some(buffer_.prepare(kReadChunkBytes),
+                          [self = shared_from_this()](ErrorCode ec, std::size_t bytes) {
+                            self->reading_ = false;
+                            self->discarded_ += bytes;
+                            if (ec || self->closed_ || self->discarded_ > kMaxLingerBytes)
+                              return self->closeNow();
+                            self->discard();
+                          });
+}
+
+void Session::closeIfIdle() {
+  if (queue_.empty() && !writing_)
+    closeNow();
+}
+
+void Session::onDrain() {
+  if (closed_)
+    return;
+  closing_ = true;
+  closeIfIdle(); // otherwise the last owed response goes out with Connection: close
+}
+
+// ---- timers --------------------------------------------------------------------------------
+
+void Session::armReadTimer(Duration timeout) {
+  const std::uint64_t generation = ++readGeneration_;
+  readTimer_.expires_after(timeout);
+  readTimer_.async_wait([self = shared_from_this(), generation, timeout](ErrorCode ec) {
+    self->onReadTimer(ec, generation, timeout);
+  });
+}
+
+void Session::onReadTimer(ErrorCode ec, std::uint64_t generation, Duration timeout) {
+  if (ec || generation != readGeneration_ || closed_ || !reading_)
+    return;
+  // A client waiting for owed responses is not slow: only an idle connection times out.
+  if (!lingering_ && !queue_.empty())
+    return armReadTimer(timeout);
+  closeNow();
+}
+
+void Session::cancelReadTimer() noexcept {
+  ++readGeneration_;
+  try {
+    readTimer_.cancel();
+  } catch (...) {
+  }
+}
+
+void Session::armWriteTimer() {
+  const std::uint64_t generation = ++writeGeneration_;
+  writeTimer_.expires_after(options_.writeTimeout);
+  writeTimer_.async_wait([self = shared_from_this(), generation](ErrorCode ec) {
+    if (!ec && generation == self->writeGeneration_ && self->writing_)
+      self->closeNow();
+  });
+}
+
+void Session::cancelWriteTimer() noexcept {
+  ++writeGeneration_;
+  try {
+    writeTimer_.cancel();
+  } catch (...) {
+  }
+}
+
+} // namespace strahler::http::detail

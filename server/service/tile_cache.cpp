@@ -1,0 +1,281 @@
+#include "tile_cache.h"
+
+#include <atomic>
+#include <exception>
+#include <list>
+#include <mutex>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace strahler::service {
+
+namespace {
+
+using Outcome = TileCache::Outcome;
+using Callback = TileCache::Callback;
+
+/// Bookkeeping bytes charged per entry on top of its strings (list node, index slot, control
+/// block): a rough figure, so that many tiny tiles still count against the bound.
+constexpr std::size_t kEntryOverheadBytes = 64;
+
+std::size_t entryBytes(const std::string& key, const CachedTile& tile) {
+  return key.size() + tile.bytes.size() + tile.mimeType.size() + tile.etag.size() +
+         kEntryOverheadBytes;
+}
+
+/// The requests waiting for one computation. Its identity tells a finishing computation
+/// whether the flight it belongs to is still the one registered for its key.
+struct Flight {
+  std::vector<Callback> waiters;
+};
+
+struct Entry {
+  std::string key;
+  std::shared_ptr<const CachedTile> tile;
+  std::size_t bytes = 0;
+};
+
+/// Calls every waiter even when one throws; returns the first exception.
+std::exception_ptr deliver(const std::vector<Callback>& waiters, const Outcome& outcome) {
+  std::exception_ptr first;
+  for (const Callback& callback : waiters) {
+    try {
+      callback(outcome);
+    } catch (...) {
+      if (!first) {
+        first = std::current_exception();
+      }
+    }
+  }
+  return first;
+}
+
+Outcome errorOutcome(int status, std::string message) {
+  return Outcome{nullptr, status, std::move(message)};
+}
+
+/// Runs `compute`, turning exceptions and tile-less successes into 500 outcomes.
+Outcome computeSafely(const TileCache::Compute& compute) {
+  try {
+    Outcome outcome = compute();
+    if (outcome.errorStatus != 0) {
+      outcome.tile = nullptr;
+    } else if (!outcome.tile) {
+      return errorOutcome(500, "tile computation produced no tile");
+    }
+    return outcome;
+  } catch (const std::exception& e) {
+    return errorOutcome(500, std::string("tile computation failed: ") + e.what());
+  } catch (...) {
+    return errorOutcome(500, "tile computation failed");
+  }
+}
+
+/// The cache state. Shared with the scheduled computations so that they may outlive the
+/// TileCache object (a worker pool may still hold them).
+struct CacheCore {
+  explicit CacheCore(std::size_t bound) : maxBytes(bound) {}
+
+  const std::size_t maxBytes;
+  mutable std::mutex mutex;
+  std::list<Entry> lru; ///< Most recently used first.
+  std::unordered_map<std::string_view, std::list<Entry>::iterator> index; ///< Keys live in lru.
+  std::unordered_map<std::string, std::shared_ptr<Flight>> flights;
+  TileCacheStats counters; ///< entries and inFlight are derived in stats().
+
+  /// Under the lock: the cached tile of `key`, now the most recently used, or null.
+  std::shared_ptr<const CachedTile> lookup(const std::string& key) {
+    const auto found = index.find(key);
+    if (found == index.end()) {
+      return nullptr;
+    }
+    lru.splice(lru.begin(), lru, found->second);
+    ++counters.hits;
+    return found->second->tile;
+  }
+
+  /// Under the lock: adds `callback` to the flight of `key`. Returns the flight when this
+  /// call started it (the caller must schedule it), null when it joined one in progress.
+  std::shared_ptr<Flight> join(const std::string& key, Callback&& callback) {
+    ++counters.misses;
+    std::shared_ptr<Flight>& flight = flights[key];
+    if (flight) {
+      ++counters.coalesced;
+      flight->waiters.push_back(std::move(callback));
+      return nullptr;
+    }
+    flight = std::make_shared<Flight>();
+    flight->waiters.push_back(std::move(callback));
+    return flight;
+  }
+
+  /// Under the lock: the waiters of `flight`, unregistering it; none when it is no longer
+  /// the flight of `key` (already answered). This is what makes every answer happen once.
+  std::vector<Callback> takeWaiters(const std::string& key, const std::shared_ptr<Flight>& flight) {
+    const auto found = flights.find(key);
+    if (found == flights.end() || found->second != flight) {
+      return {};
+    }
+    flights.erase(found);
+    return std::move(flight->waiters);
+  }
+
+  /// Under the lock: caches `tile` as the most recently used, then evicts down to the bound.
+  /// A tile larger than the whole cache is not kept.
+  void insert(const std::string& key, std::shared_ptr<const CachedTile> tile) {
+    const std::size_t bytes = entryBytes(key, *tile);
+    if (bytes > maxBytes) {
+      return;
+    }
+    if (const auto found = index.find(key); found != index.end()) {
+      removeEntry(found->second);
+    }
+    lru.push_front(Entry{key, std::move(tile), bytes});
+    index.emplace(lru.front().key, lru.begin());
+    counters.bytes += bytes;
+    while (counters.bytes > maxBytes) {
+      removeEntry(std::prev(lru.end()));
+      ++counters.evictions;
+    }
+  }
+
+  void removeEntry(std::list<Entry>::iterator entry) {
+    counters.bytes -= entry->bytes;
+    index.erase(entry->key);
+    lru.erase(entry);
+  }
+
+  /// Records the outcome of `flight` and answers its waiters outside the lock. Rethrows the
+  /// first exception a callback threw, after every waiter has been called.
+  void finish(const std::string& key, const std::shared_ptr<Flight>& flight,
+              const Outcome& outcome) {
+    std::vector<Callback> waiters;
+    {
+      std::lock_guard lock(mutex);
+      ++counters.computations;
+      if (outcome.errorStatus == 0) {
+        insert(key, outcome.tile);
+      } else {
+        ++counters.errors;
+      }
+      waiters = takeWaiters(key, flight);
+    }
+    if (const std::exception_ptr error = deliver(waiters, outcome)) {
+      std::rethrow_exception(error);
+    }
+  }
+
+  /// Answers the waiters of a flight that will never run with 503. Callback exceptions are
+  /// dropped: this runs from destructors and refusal paths with nobody to report them to.
+  void abandon(const std::string& key, const std::shared_ptr<Flight>& flight) noexcept {
+    std::vector<Callback> waiters;
+    {
+      std::lock_guard lock(mutex);
+      waiters = takeWaiters(key, flight);
+      counters.refused += waiters.size();
+    }
+    (void)deliver(waiters, errorOutcome(503, "server busy"));
+  }
+};
+
+/// One scheduled computation. Whatever becomes of the work — run, refused, or dropped unrun
+/// by a pool that shuts down — the waiters of its flight are answered exactly once.
+class Ticket {
+public:
+  Ticket(std::shared_ptr<CacheCore> core, std::string key, std::shared_ptr<Flight> flight,
+         TileCache::Compute compute)
+      : core_(std::move(core)), key_(std::move(key)), flight_(std::move(flight)),
+        compute_(std::move(compute)) {}
+  Ticket(const Ticket&) = delete;
+  Ticket& operator=(const Ticket&) = delete;
+  ~Ticket() {
+    if (!ran_.load()) {
+      core_->abandon(key_, flight_);
+    }
+  }
+
+  /// Computes the tile and answers the waiters; only the first call does anything.
+  void run() {
+    if (ran_.exchange(true)) {
+      return;
+    }
+    core_->finish(key_, flight_, computeSafely(compute_));
+  }
+
+  /// Answers the waiters with 503 unless the computation already ran.
+  void refuse() {
+    if (!ran_.exchange(true)) {
+      core_->abandon(key_, flight_);
+    }
+  }
+
+private:
+  std::shared_ptr<CacheCore> core_;
+  std::string key_;
+  std::shared_ptr<Flight> flight_;
+  TileCache::Compute compute_;
+  std::atomic<bool> ran_{false};
+};
+
+/// Hands the computation of a new flight to `schedule`; answers 503 when it is refused.
+void startFlight(const std::shared_ptr<CacheCore>& core, const std::string& key,
+                 std::shared_ptr<Flight> flight, const TileCache::Compute& compute,
+                 const TileCache::Schedule& schedule) {
+  auto ticket = std::make_shared<Ticket>(core, key, std::move(flight), compute);
+  bool queued = false;
+  try {
+    queued = schedule([ticket] { ticket->run(); });
+  } catch (...) {
+    queued = false; // A scheduler that throws refuses.
+  }
+  if (!queued) {
+    ticket->refuse();
+  }
+}
+
+} // namespace
+
+struct TileCache::Impl {
+  std::shared_ptr<CacheCore> core;
+};
+
+TileCache::TileCache(std::size_t maxBytes)
+    : impl_(std::make_unique<Impl>(Impl{std::make_shared<CacheCore>(maxBytes)})) {}
+
+TileCache::~TileCache() = default;
+
+void TileCache::get(const std::string& key, const Compute& compute, const Schedule& schedule,
+                    Callback callback) {
+  CacheCore& core = *impl_->core;
+  std::shared_ptr<const CachedTile> hit;
+  std::shared_ptr<Flight> started;
+  {
+    std::lock_guard lock(core.mutex);
+    hit = core.lookup(key);
+    if (!hit) {
+      started = core.join(key, std::move(callback));
+    }
+  }
+  if (hit) {
+    callback(Outcome{std::move(hit), 0, {}});
+  } else if (started) {
+    startFlight(impl_->core, key, std::move(started), compute, schedule);
+  }
+}
+
+TileCacheStats TileCache::stats() const {
+  const CacheCore& core = *impl_->core;
+  std::lock_guard lock(core.mutex);
+  TileCacheStats result = core.counters;
+  result.entries = core.lru.size();
+  result.inFlight = core.flights.size();
+  return result;
+}
+
+std::size_t TileCache::maxBytes() const noexcept {
+  return impl_->core->maxBytes;
+}
+
+} // namespace strahler::service

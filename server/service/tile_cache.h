@@ -1,0 +1,77 @@
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace strahler::service {
+
+/// A finished, encoded tile as the cache keeps it.
+struct CachedTile {
+  std::string bytes;
+  std::string mimeType;
+  std::string etag; ///< Strong ETag, quoted.
+  double evaluateMs = 0.0;
+  double encodeMs = 0.0;
+};
+
+/// Counters of the cache, for /metrics.
+struct TileCacheStats {
+  std::size_t hits = 0;
+  std::size_t misses = 0;
+  std::size_t evictions = 0;
+  std::size_t bytes = 0; ///< Bytes held now (key, tile bytes, MIME type, ETag + 64 per entry).
+  std::size_t entries = 0;
+  std::size_t inFlight = 0;     ///< Distinct tiles being computed now.
+  std::size_t coalesced = 0;    ///< Requests that waited for another request's computation.
+  std::size_t computations = 0; ///< Times a tile was actually computed.
+  std::size_t errors = 0;       ///< Computations that ended in an error (not cached).
+  std::size_t refused = 0;      ///< Requests answered 503 because the work was not scheduled.
+};
+
+/// A byte-bounded LRU of encoded tiles with single flight: concurrent requests for the same
+/// key trigger one computation and all receive its result. Thread-safe.
+class TileCache {
+public:
+  /// The result of a computation: a tile, or an error status and message (not cached).
+  struct Outcome {
+    std::shared_ptr<const CachedTile> tile; ///< Null on error.
+    int errorStatus = 0;
+    std::string errorMessage;
+  };
+  /// Computes a tile; runs outside the cache lock.
+  using Compute = std::function<Outcome()>;
+  /// Receives the outcome; may run on the computing thread.
+  using Callback = std::function<void(const Outcome&)>;
+  /// Hands a computation to a worker; returns false when it cannot be queued (overload).
+  /// Work destroyed without being run (e.g. by WorkerPool's destructor) answers 503.
+  using Schedule = std::function<bool(std::function<void()> work)>;
+
+  /// A cache holding at most `maxBytes` bytes (0: nothing is kept, single flight still works).
+  explicit TileCache(std::size_t maxBytes);
+  ~TileCache();
+
+  /// Delivers the tile of `key` to `callback`: at once on a hit; otherwise joins the
+  /// computation in flight for `key`, or starts one through `schedule`. When `schedule`
+  /// refuses (or throws, or drops the work unrun), callback and every request that joined
+  /// meanwhile get errorStatus 503. An exception from `compute` becomes errorStatus 500.
+  /// Each callback is called exactly once, never under the cache lock (it may use the cache
+  /// again); if one throws, the others are still called and the first exception propagates to
+  /// whoever ran the work (swallowed for 503 answers). The work holds the cache state alive,
+  /// so a TileCache may be destroyed while its computations are still queued.
+  void get(const std::string& key, const Compute& compute, const Schedule& schedule,
+           Callback callback);
+
+  /// Current counters.
+  TileCacheStats stats() const;
+  /// The byte bound.
+  std::size_t maxBytes() const noexcept;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace strahler::service

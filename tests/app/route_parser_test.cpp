@@ -1,0 +1,38 @@
+#include "route_parser.h"
+
+#include <gtest/gtest.h>
+
+namespace strahler::app {
+namespace {
+
+TEST(RouteParser, SplitsAndDecodesPathAndQuery) {
+  const auto t =
+      parseTarget("/worlds/my%20island/tiles/3/4/2.png?size=512&encoding=terrarium&x=a%2Bb+c");
+  ASSERT_TRUE(t.ok());
+  EXPECT_EQ(t.value().segments,
+            (std::vector<std::string>{"worlds", "my island", "tiles", "3", "4", "2.png"}));
+  EXPECT_EQ(t.value().query.at("size"), "512");
+  EXPECT_EQ(t.value().query.at("x"), "a+b c");
+  EXPECT_TRUE(parseTarget("/").value().segments.empty());
+  EXPECT_EQ(parseTarget("/worlds/").value().segments.size(), 1u);
+}
+
+TEST(RouteParser, RejectsMalformedTargets) {
+  for (const char* bad : {"worlds", "/a/../b", "/a/./b", "/%2e%2e/x", "/a%zz", "/a%4", "/a%00b",
+                          "/a//b", "/a%2Fb", "/a\x01", "/x?k=%ZZ"}) {
+    const auto t = parseTarget(bad);
+    ASSERT_FALSE(t.ok()) << bad;
+    EXPECT_NE(t.error().message.find("malformed request target"), std::string::npos);
+  }
+}
+
+TEST(RouteParser, ParsesBoundedDecimals) {
+  EXPECT_EQ(parseDecimal("0").value(), 0);
+  EXPECT_EQ(parseDecimal("1234567890").value(), 1234567890);
+  for (const char* bad : {"", "-1", "+1", "1.5", "1e3", "12345678901", " 1", "0x10"}) {
+    EXPECT_FALSE(parseDecimal(bad).ok()) << bad;
+  }
+}
+
+} // namespace
+} // namespace strahler::app

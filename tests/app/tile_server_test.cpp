@@ -1,0 +1,223 @@
+// The tile server's endpoints over real sockets on 127.0.0.1 (ephemeral port).
+#include "http_client.h"
+#include "http_server.h"
+#include "test_worlds.h"
+#include "tile_server.h"
+
+#include "strahler/construction/world_builder.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <thread>
+
+namespace strahler::app {
+namespace {
+
+using strahler::testing::request;
+using strahler::testing::sendRaw;
+
+/// A running server over the default island.
+struct Running {
+  TileServer tiles;
+  http::Server server;
+  explicit Running(std::size_t cacheBytes = 64u << 20, int workers = 2)
+      : tiles(
+            {{"island", construction::generateWorldData(strahler::testing::defaultIslandSpec(), "k")
+                            .value()}},
+            TileServerOptions{workers, 256, cacheBytes, ""}),
+        server(
+            options(),
+            [this](const http::Request& r, std::function<void(http::Response)> done) {
+              tiles.handle(r, std::move(done));
+            },
+            [this](const std::string& route, int status, std::size_t bytes, double ms) {
+              tiles.observe(route, status, bytes, ms);
+            }) {
+    EXPECT_TRUE(server.start().ok());
+  }
+  static http::ServerOptions options() {
+    http::ServerOptions o;
+    o.port = 0;
+    o.accessLog = false;
+    return o;
+  }
+  std::uint16_t port() const { return server.port(); }
+};
+
+TEST(TileServer, EveryEndpointAnswers) {
+  Running s;
+  auto health = request(s.port(), "/health");
+  EXPECT_EQ(health.status, 200);
+  EXPECT_EQ(nlohmann::json::parse(health.body)["status"], "ok");
+  EXPECT_EQ(request(s.port(), "/").status, 200);
+  const auto worlds = nlohmann::json::parse(request(s.port(), "/worlds").body);
+  ASSERT_EQ(worlds.size(), 1u);
+  EXPECT_EQ(worlds[0]["id"], "island");
+  const auto meta = nlohmann::json::parse(request(s.port(), "/worlds/island").body);
+  EXPECT_GT(meta["areaKm2"].get<double>(), 900.0);
+  auto rivers = request(s.port(), "/worlds/island/rivers.geojson");
+  EXPECT_EQ(rivers.headers["content-type"], "application/geo+json");
+  EXPECT_EQ(nlohmann::json::parse(rivers.body)["type"], "FeatureCollection");
+  for (const char* path :
+       {"/worlds/island/tiles/9/216/186.png",
+        "/worlds/island/tiles/9/216/186.png?encoding=terrarium",
+        "/worlds/island/tiles/9/216/186.png16", "/worlds/island/tiles/9/216/186.tif",
+        "/worlds/island/tiles/9/216/186.exr?size=64", "/worlds/island/local/2/1/2.drc",
+        "/worlds/island/local/2/1/2.glb?size=16", "/worlds/island/local/0/0/0.png"}) {
+    auto tile = request(s.port(), path);
+    EXPECT_EQ(tile.status, 200) << path << " " << tile.body;
+    EXPECT_FALSE(tile.body.empty());
+    EXPECT_EQ(tile.headers["access-control-allow-origin"], "*");
+    EXPECT_EQ(tile.headers["cache-control"], "public, max-age=86400, immutable");
+    EXPECT_NE(tile.headers["server-timing"].find("eval;dur="), std::string::npos);
+    EXPECT_EQ(tile.headers["etag"].front(), '"');
+  }
+  auto metrics = request(s.port(), "/metrics");
+  EXPECT_NE(metrics.body.find("strahler_http_requests_total"), std::string::npos);
+  EXPECT_NE(metrics.body.find("strahler_tile_cache_bytes"), std::string::npos);
+}
+
+TEST(TileServer, TileJsonIsAMapLibreRasterDemSource) {
+  Running s;
+  auto r = request(s.port(), "/worlds/island/tilejson.json");
+  ASSERT_EQ(r.status, 200);
+  const auto tj = nlohmann::json::parse(r.body);
+  EXPECT_EQ(tj["tilejson"], "3.0.0");
+  EXPECT_EQ(tj["tiles"][0], "http://127.0.0.1:" + std::to_string(s.port()) +
+                                "/worlds/island/tiles/{z}/{x}/{y}.png");
+  EXPECT_EQ(tj["minzoom"], 0);
+  EXPECT_GE(tj["maxzoom"].get<int>(), 14);
+  EXPECT_EQ(tj["encoding"], "mapbox");
+  ASSERT_EQ(tj["bounds"].size(), 4u);
+  EXPECT_LT(tj["bounds"][0].get<double>(), tj["bounds"][2].get<double>());
+  EXPECT_EQ(tj["center"].size(), 3u);
+}
+
+TEST(TileServer, BadRequestsGetTheirStatusAndTheServerStaysHealthy) {
+  Running s;
+  const std::pair<std::string, int> cases[] = {
+      {"/worlds/nope", 404},
+      {"/worlds/nope/tiles/0/0/0.png", 404},
+      {"/worlds/island/tiles/19/0/0.png", 404},
+      {"/worlds/island/tiles/3/8/0.png", 404},
+      {"/worlds/island/tiles/3/0/8.png", 404},
+      {"/worlds/island/local/40/0/0.png", 404},
+      {"/worlds/island/tiles/3/-1/0.png", 400},
+      {"/worlds/island/tiles/3/1/0.bmp", 400},
+      {"/worlds/island/tiles/a/1/0.png", 400},
+      {"/worlds/island/tiles/3/1/0", 400},
+      {"/worlds/island/tiles/3/99999999999/0.png", 400},
+      {"/worlds/island/tiles/3/+1/0.png", 400},
+      {"/worlds/island/tiles/3/1/0.png?size=abc", 400},
+      {"/worlds/island/tiles/3/1/0.png?size=5000", 400},
+      {"/worlds/island/tiles/3/1/0.png?size=-1", 400},
+      {"/worlds/island/tiles/3/1/0.png?size=8", 400},
+      {"/worlds/island/local/1/0/0.glb?size=1024", 400},
+      {"/worlds/island/tiles/3/1/0.png?encoding=jpeg", 400},
+      {"/worlds/island/tiles/3/1/0.tif?encoding=terrarium", 400},
+      {"/worlds/island/%zz", 400},
+      {"/worlds/island/../island", 400},
+      {"/worlds//island", 400},
+      {"/worlds/island/tiles/3/1", 404},
+      {"/worlds/island/unknown.json", 404},
+      {"/nothing-here", 404},
+      {"/worlds/island/tiles/3/1/0.png%00", 400},
+      {"/worlds/island/tiles/1.5/1/0.png", 400},
+      {"/worlds/island/local/0/0/1.png", 404},
+      {"/worlds/island/tiles/3/1/0.png?size=", 400},
+      {"/worlds/island/tiles/03/1/0.png", 200},
+      {"/worlds/island/local/100/0/0.png", 400}};
+  for (const auto& [target, status] : cases) {
+    auto r = request(s.port(), target);
+    EXPECT_EQ(r.status, status) << target << " -> " << r.body;
+    if (status >= 400) {
+      EXPECT_NE(r.body.find("\"error\""), std::string::npos) << target;
+      EXPECT_EQ(r.headers["content-type"], "application/json") << target;
+    }
+    ASSERT_EQ(request(s.port(), "/health").status, 200) << "after " << target;
+  }
+  for (const char* method : {"POST", "PUT", "DELETE", "PATCH"}) {
+    auto r = request(s.port(), "/worlds/island/tiles/0/0/0.png", method);
+    EXPECT_EQ(r.status, 405) << method;
+    EXPECT_NE(r.headers["allow"].find("GET"), std::string::npos);
+  }
+}
+
+TEST(TileServer, ConditionalRequestsAndHead) {
+  Running s;
+  const std::string path = "/worlds/island/tiles/10/433/373.png";
+  auto first = request(s.port(), path);
+  ASSERT_EQ(first.status, 200);
+  const std::string etag = first.headers.at("etag");
+  auto again = request(s.port(), path, "GET", "If-None-Match: " + etag + "\r\n");
+  EXPECT_EQ(again.status, 304);
+  EXPECT_TRUE(again.body.empty());
+  EXPECT_EQ(again.headers["etag"], etag);
+  EXPECT_EQ(request(s.port(), path, "GET", "If-None-Match: \"other\", " + etag + "\r\n").status,
+            304);
+  EXPECT_EQ(request(s.port(), path, "GET", "If-None-Match: \"other\"\r\n").status, 200);
+  auto head = request(s.port(), path, "HEAD");
+  EXPECT_EQ(head.status, 200);
+  EXPECT_TRUE(head.body.empty());
+  EXPECT_EQ(head.headers["content-length"], std::to_string(first.body.size()));
+  EXPECT_EQ(head.headers["etag"], etag);
+  EXPECT_EQ(head.headers["content-type"], first.headers["content-type"]);
+  // Same bytes for the same tile, every time.
+  EXPECT_EQ(request(s.port(), path).body, first.body);
+}
+
+TEST(TileServer, ConcurrentRequestsForOneTileComputeItOnce) {
+  Running s;
+  std::vector<std::thread> clients;
+  std::atomic<int> ok{0};
+  for (int i = 0; i < 32; ++i)
+    clients.emplace_back([&] {
+      if (request(s.port(), "/worlds/island/tiles/11/868/746.png?size=512").status == 200)
+        ++ok;
+    });
+  for (std::thread& t : clients)
+    t.join();
+  EXPECT_EQ(ok.load(), 32);
+  EXPECT_EQ(s.tiles.cache().stats().computations, 1u);
+  auto metrics = request(s.port(), "/metrics").body;
+  EXPECT_NE(metrics.find("strahler_tile_computations_total 1"), std::string::npos) << metrics;
+}
+
+TEST(TileServer, CacheStaysWithinItsByteBound) {
+  Running s(300'000); // ~3 Terrain-RGB tiles
+  for (int x = 0; x < 12; ++x) {
+    ASSERT_EQ(request(s.port(), "/worlds/island/local/4/" + std::to_string(x) + "/7.png").status,
+              200);
+    ASSERT_LE(s.tiles.cache().stats().bytes, 300'000u);
+  }
+  EXPECT_GT(s.tiles.cache().stats().evictions, 0u);
+}
+
+TEST(TileServer, StopsGracefullyUnderLoad) {
+  auto s = std::make_unique<Running>();
+  std::atomic<bool> running{true};
+  std::atomic<int> completed{0}, failed{0};
+  std::vector<std::thread> clients;
+  for (int c = 0; c < 8; ++c)
+    clients.emplace_back([&, c] {
+      for (int i = 0; running && i < 200; ++i) {
+        auto r = request(s->port(), "/worlds/island/local/5/" + std::to_string(c) + "/" +
+                                        std::to_string(i % 32) + ".png?size=64");
+        (r.status == 200 ? completed : failed)++;
+      }
+    });
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  const auto start = std::chrono::steady_clock::now();
+  s->server.stop(std::chrono::milliseconds(3000));
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+  running = false;
+  for (std::thread& t : clients)
+    t.join();
+  EXPECT_GT(completed.load(), 0);
+  s.reset();
+}
+
+} // namespace
+} // namespace strahler::app
