@@ -12,6 +12,7 @@ packages=(
   nlohmann-json3-dev
   libprotobuf-dev protobuf-compiler
   googletest libgtest-dev libbenchmark-dev
+  chromium
 )
 
 missing=()

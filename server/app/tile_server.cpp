@@ -251,6 +251,8 @@ void TileServer::handle(const http::Request& request, std::function<void(http::R
   const std::vector<std::string>& s = parsed.value().segments;
   if (s.empty())
     return done(index());
+  if (s.size() == 1 && s[0] == "game")
+    return done(staticFile({"game.html"}));
   if (s.size() == 1 && s[0] == "health")
     return done(jsonResponse({{"status", "ok"}, {"worlds", worlds_.size()}}, "health"));
   if (s.size() == 1 && s[0] == "metrics") {
@@ -284,10 +286,13 @@ void TileServer::handle(const http::Request& request, std::function<void(http::R
                   s, parsed.value().query, request, std::move(done));
     return done(http::errorResponse(404, "no such resource under /worlds/" + w->id));
   }
-  // Static files of the viewer.
+  done(staticFile(s));
+}
+
+http::Response TileServer::staticFile(const std::vector<std::string>& segments) const {
   if (!options_.webRoot.empty()) {
     std::filesystem::path file(options_.webRoot);
-    for (const std::string& part : s)
+    for (const std::string& part : segments)
       file /= part;
     const char* mime = staticMime(file.extension().string());
     std::ifstream in(file, std::ios::binary);
@@ -296,10 +301,10 @@ void TileServer::handle(const http::Request& request, std::function<void(http::R
       r.headers = {{"Content-Type", mime}, {"Cache-Control", "public, max-age=300"}};
       r.body.assign(std::istreambuf_iterator<char>(in), {});
       r.route = "static";
-      return done(std::move(r));
+      return r;
     }
   }
-  done(http::errorResponse(404, "not found"));
+  return http::errorResponse(404, "not found");
 }
 
 void TileServer::tile(const ServedWorld& w, tiling::SchemeKind scheme,

@@ -53,6 +53,8 @@ private:
   struct ServedWorld;
   const ServedWorld* find(const std::string& id) const;
   http::Response index() const;
+  /// A file of the built viewer (webRoot), by path segments; 404 when there is none.
+  http::Response staticFile(const std::vector<std::string>& segments) const;
   http::Response worldList(const http::Request& request) const;
   http::Response tileJson(const ServedWorld& world, const http::Request& request) const;
   void tile(const ServedWorld& world, tiling::SchemeKind scheme,

@@ -39,6 +39,10 @@ double skirtDepth(double vertexSpacing) {
 
 } // namespace
 
+double meshPositionError(double vertexSpacing) noexcept {
+  return std::max(0.01, vertexSpacing * 1e-3);
+}
+
 base::Result<TileFormat> parseTileFormat(const std::string& name) {
   if (name == "png")
     return TileFormat::kTerrainRgb;
@@ -99,9 +103,10 @@ base::Result<RenderedTile> TileService::render(const TileRequest& request) const
     input.heights.assign(heights.begin(), heights.end());
     input.skirtDepth = skirtDepth(input.spacing);
     STRAHLER_ASSIGN_OR_RETURN(const encoding::Mesh m, encoding::buildGridMesh(input));
+    const encoding::DracoOptions draco{meshPositionError(input.spacing)};
     STRAHLER_ASSIGN_OR_RETURN(out.bytes, request.format == TileFormat::kGlb
-                                             ? encoding::encodeGlb(m)
-                                             : encoding::encodeDraco(m));
+                                             ? encoding::encodeGlb(m, draco)
+                                             : encoding::encodeDraco(m, draco));
     out.mimeType =
         request.format == TileFormat::kGlb ? "model/gltf-binary" : "application/octet-stream";
   } else {

@@ -35,6 +35,11 @@ struct RenderedTile {
   tiling::TileStats stats;
 };
 
+/// Largest position error (m) a mesh tile's Draco quantisation may introduce: 1 cm, or a
+/// thousandth of the vertex spacing on coarse tiles (kilometre-wide tiles cannot keep 1 cm in
+/// float32 coordinates).
+double meshPositionError(double vertexSpacing) noexcept;
+
 /// Parses a format name as used in URLs and on the command line: png (Terrain-RGB),
 /// terrarium, png16, tif, exr, drc, glb.
 base::Result<TileFormat> parseTileFormat(const std::string& name);

@@ -65,7 +65,8 @@ TEST(TileServer, EveryEndpointAnswers) {
         "/worlds/island/tiles/9/216/186.png?encoding=terrarium",
         "/worlds/island/tiles/9/216/186.png16", "/worlds/island/tiles/9/216/186.tif",
         "/worlds/island/tiles/9/216/186.exr?size=64", "/worlds/island/local/2/1/2.drc",
-        "/worlds/island/local/2/1/2.glb?size=16", "/worlds/island/local/0/0/0.png"}) {
+        "/worlds/island/local/2/1/2.glb?size=16", "/worlds/island/local/0/0/0.png",
+        "/worlds/island/local/0/0/0.glb", "/worlds/island/local/1/1/0.drc"}) {
     auto tile = request(s.port(), path);
     EXPECT_EQ(tile.status, 200) << path << " " << tile.body;
     EXPECT_FALSE(tile.body.empty());

@@ -3,6 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -10,6 +12,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 
 namespace {
@@ -277,6 +280,56 @@ TEST(TileCommand, WritesEveryFormatAndRejectsBadRequests) {
   const ProcessRun scheme =
       strahler(base + "--scheme polar --z 1 --x 0 --y 0 --format png -o x.png");
   EXPECT_EQ(scheme.exitCode, 2);
+}
+
+} // namespace
+
+namespace {
+
+/// Reads one line from a pipe (empty at end of file).
+std::string readLine(FILE* pipe) {
+  std::string line;
+  int c;
+  while ((c = std::fgetc(pipe)) != EOF && c != '\n')
+    line += static_cast<char>(c);
+  return line;
+}
+
+TEST(ServeCommand, ServesTilesAndStopsCleanlyOnSigterm) {
+  // The real program on an ephemeral port; its first stdout line names the address.
+  const std::string command = "STRAHLER_CACHE_DIR=" + (scratchDir() / "cache").string() + " exec " +
+                              std::string(STRAHLER_EXECUTABLE) +
+                              " serve --quiet --port 0 --threads 2 --workers 2 2>&1 & echo $!";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  const pid_t pid = static_cast<pid_t>(std::stol(readLine(pipe)));
+  const std::string banner = readLine(pipe);
+  const std::size_t colon = banner.rfind(':');
+  ASSERT_NE(colon, std::string::npos) << banner;
+  const int port = std::stoi(banner.substr(colon + 1));
+  const std::string base =
+      "curl -s -o /dev/null -w '%{http_code}' http://127.0.0.1:" + std::to_string(port);
+  auto status = [&](const std::string& path) {
+    FILE* curl = popen((base + path).c_str(), "r");
+    const std::string code = readLine(curl);
+    pclose(curl);
+    return code;
+  };
+  EXPECT_EQ(status("/health"), "200");
+  EXPECT_EQ(status("/worlds/default/tiles/10/434/373.png"), "200");
+  EXPECT_EQ(status("/worlds/default/tiles/40/0/0.png"), "404");
+  const auto start = std::chrono::steady_clock::now();
+  ASSERT_EQ(::kill(pid, SIGTERM), 0);
+  std::string rest;
+  for (std::string line; !(line = readLine(pipe)).empty() || !std::feof(pipe);)
+    rest += line + "\n";
+  pclose(pipe);
+  // The server was started by the shell, which exited: poll until the process is gone.
+  while (::kill(pid, 0) == 0 && std::chrono::steady_clock::now() - start < std::chrono::seconds(6))
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_NE(::kill(pid, 0), 0) << "server still running 6 s after SIGTERM";
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+  EXPECT_NE(rest.find("SIGTERM received, draining"), std::string::npos) << rest;
 }
 
 } // namespace

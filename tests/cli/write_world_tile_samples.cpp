@@ -90,8 +90,9 @@ bool meshes(const app::TileService& service, const fs::path& dir, const tiling::
     return false;
   const std::string json =
       "{\"name\":\"" + name + "\",\"drc\":\"" + name + ".drc\",\"glb\":\"" + name +
-      ".glb\",\"maxPositionError\":0.01,\"spacing\":" + number(input.spacing) +
-      ",\"hasUv\":true,\"origin\":[" + number(input.origin.x) + "," + number(input.origin.y) +
+      ".glb\",\"maxPositionError\":" + number(app::meshPositionError(input.spacing)) +
+      ",\"spacing\":" + number(input.spacing) + ",\"hasUv\":true,\"origin\":[" +
+      number(input.origin.x) + "," + number(input.origin.y) +
       "],\"positions\":" + array(mesh.value().positions) +
       ",\"indices\":" + array(mesh.value().indices) + "}\n";
   return write(dir / (name + ".drc"), drc.value().bytes) &&

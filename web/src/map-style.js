@@ -1,0 +1,71 @@
+// The MapLibre style of one world, built from the server's own resources only (no base map,
+// no glyphs, no sprites), so the viewer works offline.
+import { worldUrl } from './api.js';
+
+export const RIVER_LAYER = 'rivers';
+export const TERRAIN_SOURCE = 'terrain-dem';
+
+/** Rosgen stream types (Génevaux et al. use B, E, D and deltas) and their colours. */
+export const ROSGEN_COLOURS = {
+  B: '#0b4f9c',       // steep, step-pool mountain streams
+  E: '#1fa3c4',       // low-gradient meandering channels
+  D: '#6a3fb5',       // braided channels
+  'D-delta': '#c2338a', // distributaries at the mouth
+};
+
+// Hypsometric tint: sea floor in blues, then beach, lowland greens, browns, rock and snow.
+const RELIEF = [
+  -400, '#0b3a5e', -40, '#1f6592', -0.5, '#5a9bc2', 0, '#d9cf9e', 20, '#a8c98a', 200, '#6fa35a',
+  600, '#8e8b4f', 1000, '#9c7652', 1500, '#b3aaa0', 2200, '#ffffff',
+];
+
+function riverWidth(scale) {
+  return ['interpolate', ['linear'], ['coalesce', ['get', 'strahler'], 1], 1, 0.4 * scale, 6, 4 * scale];
+}
+
+export function worldStyle(world, exaggeration) {
+  const tilejson = worldUrl(world, 'tilejson.json');
+  return {
+    version: 8,
+    // Two sources of the same tiles: MapLibre renders 3D terrain and hillshade better when they
+    // do not share one (and warns otherwise). The second fetch is served by the HTTP cache.
+    sources: {
+      [TERRAIN_SOURCE]: { type: 'raster-dem', url: tilejson, tileSize: 256 },
+      shade: { type: 'raster-dem', url: tilejson, tileSize: 256 },
+      rivers: { type: 'geojson', data: worldUrl(world, 'rivers.geojson') },
+    },
+    terrain: { source: TERRAIN_SOURCE, exaggeration },
+    layers: [
+      // The open sea beyond the tiles' bounds, in the colour of the shelf's outer edge.
+      { id: 'background', type: 'background', paint: { 'background-color': '#1f6592' } },
+      {
+        id: 'relief', type: 'color-relief', source: 'shade',
+        paint: { 'color-relief-color': ['interpolate', ['linear'], ['elevation'], ...RELIEF] },
+      },
+      {
+        id: 'hillshade', type: 'hillshade', source: 'shade',
+        paint: {
+          'hillshade-exaggeration': 0.6,
+          'hillshade-shadow-color': 'rgba(20, 24, 40, 0.7)',
+          'hillshade-highlight-color': 'rgba(255, 255, 240, 0.35)',
+          'hillshade-accent-color': 'rgba(60, 50, 35, 0.4)',
+        },
+      },
+      {
+        id: RIVER_LAYER, type: 'line', source: 'rivers',
+        filter: ['==', ['geometry-type'], 'LineString'],
+        layout: { 'line-join': 'round', 'line-cap': 'round' },
+        paint: {
+          // Width grows with Strahler order and with zoom (zoom must be the outer interpolation).
+          'line-width': ['interpolate', ['exponential', 1.6], ['zoom'], 8, riverWidth(1), 14, riverWidth(4)],
+          'line-color': ['match', ['get', 'rosgen'], ...Object.entries(ROSGEN_COLOURS).flat(), '#1565c0'],
+        },
+      },
+      {
+        id: 'mouths', type: 'circle', source: 'rivers',
+        filter: ['==', ['get', 'mouth'], true],
+        paint: { 'circle-radius': 3, 'circle-color': '#ffffff', 'circle-stroke-color': '#0b4f9c', 'circle-stroke-width': 1.5 },
+      },
+    ],
+  };
+}

@@ -1,0 +1,94 @@
+// The map viewer: a world's Terrain-RGB tiles as 3D terrain, colour relief and hillshade, with
+// its river network on top. Tests drive it through window.strahlerMap (the maplibregl.Map).
+import * as maplibregl from 'maplibre-gl';
+import { loadWorlds, rememberWorld } from './api.js';
+import { ROSGEN_COLOURS, TERRAIN_SOURCE, worldStyle } from './map-style.js';
+import { describePoint } from './point-info.js';
+import { TileTimings, registerTimedProtocol, showTimings, timedUrl } from './tile-timing.js';
+
+const $ = (id) => document.getElementById(id);
+const FIT = { padding: 40, duration: 0 };
+
+function describeWorld(world) {
+  const area = Number(world.areaKm2);
+  return `${world.name ?? world.id} · ${Number.isFinite(area) ? `${area.toFixed(0)} km²` : ''}` +
+    (world.mouths !== undefined ? ` · ${world.mouths} mouths` : '');
+}
+
+function showLegend(element) {
+  element.replaceChildren(...Object.entries(ROSGEN_COLOURS).map(([type, colour]) => {
+    const item = document.createElement('span');
+    item.className = 'legend-item';
+    item.style.setProperty('--swatch', colour);
+    item.textContent = `Rosgen ${type}`;
+    return item;
+  }));
+}
+
+function setupWorldPicker(worlds, selected, onChange) {
+  const select = $('world');
+  for (const w of worlds) select.add(new Option(w.name ?? w.id, w.id, false, w === selected));
+  $('world-picker').hidden = worlds.length < 2;
+  select.addEventListener('change', () => onChange(worlds.find((w) => w.id === select.value)));
+}
+
+function setupExaggeration(map) {
+  const input = $('exaggeration');
+  const update = () => {
+    const exaggeration = Number(input.value);
+    $('exaggeration-value').textContent = `${exaggeration.toFixed(1)}×`;
+    map.setTerrain({ source: TERRAIN_SOURCE, exaggeration });
+  };
+  input.addEventListener('input', update);
+  return () => Number(input.value);
+}
+
+async function main() {
+  const { worlds, selected } = await loadWorlds();
+  const timings = new TileTimings();
+  registerTimedProtocol(maplibregl, timings);
+  showTimings($('timings'), timings);
+  showLegend($('legend'));
+
+  const exaggeration = Number($('exaggeration').value);
+  const map = new maplibregl.Map({
+    container: 'map',
+    style: worldStyle(selected, exaggeration),
+    bounds: selected.bounds,
+    fitBoundsOptions: FIT,
+    pitch: 50,
+    maxPitch: 80,
+    // Keeps the last frame readable (screenshots, tests); no fade so "idle" means drawn.
+    canvasContextAttributes: { preserveDrawingBuffer: true },
+    fadeDuration: 0,
+    attributionControl: { compact: true },
+    // Heightmap tiles go through the "timed" protocol, which records their Server-Timing.
+    transformRequest: (url, resourceType) => (resourceType === 'Tile' && /\/tiles\/\d+\/\d+\/\d+\.png/.test(url)
+      ? { url: timedUrl(url) } : undefined),
+  });
+  map.addControl(new maplibregl.NavigationControl({ visualizePitch: true }));
+  map.addControl(new maplibregl.ScaleControl());
+  window.strahlerMap = map;
+  window.strahlerTimings = timings;
+
+  const currentExaggeration = setupExaggeration(map);
+  const showWorld = (world) => {
+    $('world-info').textContent = describeWorld(world);
+    rememberWorld(world);
+  };
+  showWorld(selected);
+  setupWorldPicker(worlds, selected, (world) => {
+    map.setStyle(worldStyle(world, currentExaggeration()));
+    map.fitBounds(world.bounds, FIT);
+    showWorld(world);
+  });
+
+  map.on('click', (e) => {
+    new maplibregl.Popup({ maxWidth: '280px' }).setLngLat(e.lngLat).setDOMContent(describePoint(map, e.point, e.lngLat)).addTo(map);
+  });
+}
+
+main().catch((error) => {
+  $('world-info').textContent = `Cannot show the map: ${error.message}`;
+  console.error(error);
+});

@@ -1,0 +1,182 @@
+// The map viewer and the game client in a real browser (Debian's chromium, SwiftShader WebGL2)
+// against a real `strahler serve`. Screenshots go to web/tests/screenshots/.
+import assert from 'node:assert/strict';
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { after, before, describe, test } from 'node:test';
+import { fileURLToPath } from 'node:url';
+import { launchBrowser, openPage } from './lib/browser.mjs';
+import { pixelStats } from './lib/pixels.mjs';
+import { startServer } from './lib/server.mjs';
+
+const SCREENSHOTS = join(dirname(fileURLToPath(import.meta.url)), 'screenshots');
+const TOTAL_MS = 170_000; // the whole file, server start to browser close, stays under 3 minutes
+const STEP_MS = 60_000;   // any one wait in a page
+
+// A blank or single-colour canvas has a luminance spread near 0 and a handful of colours.
+function assertNotBlank(png, what) {
+  const stats = pixelStats(png);
+  assert.ok(stats.stdDev > 8 && stats.colours > 64, `${what} looks blank: ${JSON.stringify(stats)}`);
+}
+
+// No console error, no HTTP error, and nothing fetched from anywhere but our server (offline).
+function assertNoErrors(record) {
+  assert.deepEqual(record.errors, [], 'console errors, exceptions or failed requests');
+  const bad = record.responses.filter((r) => r.status >= 400);
+  assert.deepEqual(bad, [], 'HTTP error responses');
+  const foreign = record.responses.filter((r) => /^https?:/.test(r.url) && !r.url.startsWith(`${server.url}/`));
+  assert.deepEqual(foreign, [], 'requests to other servers');
+}
+
+let server, browser;
+const watchdog = setTimeout(() => {
+  console.error(`browser tests exceeded ${TOTAL_MS} ms`);
+  process.exit(1); // the server is killed by its exit hook, chromium when its pipe closes
+}, TOTAL_MS);
+watchdog.unref();
+
+before(async () => {
+  mkdirSync(SCREENSHOTS, { recursive: true });
+  server = await startServer();
+  browser = await launchBrowser();
+}, { timeout: 90_000 });
+
+after(async () => {
+  await browser?.close();
+  await server?.stop();
+  clearTimeout(watchdog);
+});
+
+describe('map viewer', () => {
+  let page, record;
+
+  before(async () => {
+    ({ page, record } = await openPage(browser, `${server.url}/`));
+    await page.waitForFunction(() => window.strahlerMap, null, { timeout: STEP_MS });
+    // Idle: style and every tile loaded, no transition running.
+    await page.evaluate((ms) => new Promise((resolve, reject) => {
+      const map = window.strahlerMap;
+      setTimeout(() => reject(new Error('the map never became idle')), ms);
+      if (map.loaded() && map.areTilesLoaded() && !map.isMoving()) resolve();
+      else map.once('idle', resolve);
+    }), STEP_MS);
+  }, { timeout: 2 * STEP_MS });
+
+  after(() => page?.close());
+
+  test('loads its tiles, TileJSON and rivers without errors', () => {
+    assertNoErrors(record);
+    const of = (pattern) => record.responses.filter((r) => pattern.test(r.url));
+    assert.ok(of(/\/worlds$/).length === 1, 'GET /worlds');
+    assert.ok(of(/\/tilejson\.json$/).length >= 1, 'GET tilejson.json');
+    assert.ok(of(/\/rivers\.geojson$/).length === 1, 'GET rivers.geojson');
+    const tiles = of(/\/tiles\/\d+\/\d+\/\d+\.png$/);
+    assert.ok(tiles.length >= 1, 'no heightmap tile was requested');
+    for (const tile of tiles) assert.match(tile.type, /^image\/png/, tile.url);
+  });
+
+  test('has 3D terrain, colour relief, hillshade and the river layer', async () => {
+    const state = await page.evaluate(() => {
+      const map = window.strahlerMap;
+      return {
+        terrain: map.getTerrain(),
+        layers: Object.fromEntries(['relief', 'hillshade', 'rivers', 'mouths'].map((id) => [id, map.getLayer(id)?.type])),
+        rivers: map.queryRenderedFeatures({ layers: ['rivers'] }).length,
+      };
+    });
+    assert.equal(state.terrain?.source, 'terrain-dem');
+    assert.deepEqual(state.layers, { relief: 'color-relief', hillshade: 'hillshade', rivers: 'line', mouths: 'circle' });
+    assert.ok(state.rivers > 0, 'no river feature is rendered');
+  });
+
+  test('reports the server timing of its tiles', async () => {
+    const s = await page.evaluate(() => window.strahlerTimings.summary());
+    assert.ok(s.count >= 1 && Number.isFinite(s.eval) && Number.isFinite(s.encode), JSON.stringify(s));
+    assert.match(await page.locator('#timings').innerText(), /evaluate \d/);
+  });
+
+  test('click on a river: popup with elevation, Strahler order, flow and Rosgen type', async () => {
+    // The screen point of a vertex of a rendered river, away from the panel on the left.
+    const point = await page.evaluate(() => {
+      const map = window.strahlerMap;
+      const { width, height } = map.getCanvas().getBoundingClientRect();
+      for (const f of map.queryRenderedFeatures({ layers: ['rivers'] })) {
+        for (const c of f.geometry.type === 'LineString' ? f.geometry.coordinates : f.geometry.coordinates.flat()) {
+          const p = map.project(c);
+          if (p.x > 320 && p.x < width - 60 && p.y > 60 && p.y < height - 60) return { x: p.x, y: p.y };
+        }
+      }
+      return null;
+    });
+    assert.ok(point, 'no river vertex on screen');
+    await page.mouse.click(point.x, point.y);
+    const text = await page.locator('.maplibregl-popup-content').innerText({ timeout: 10_000 });
+    assert.match(text, /Elevation ≈ -?\d+ m/);
+    assert.match(text, /Strahler order \d/);
+    assert.match(text, /Flow [\d.]+ m³\/s · Rosgen type (B|E|D|D-delta)/);
+  });
+
+  test('draws a terrain that is not blank (screenshot)', async () => {
+    assertNotBlank(await page.locator('#map canvas').screenshot(), 'the map canvas');
+    writeFileSync(join(SCREENSHOTS, 'viewer.png'), await page.screenshot());
+  });
+
+  test('the exaggeration slider changes the terrain', async () => {
+    await page.locator('#exaggeration').fill('3');
+    assert.equal(await page.evaluate(() => window.strahlerMap.getTerrain().exaggeration), 3);
+    assertNoErrors(record);
+  });
+});
+
+describe('game client', () => {
+  let page, record;
+  const stats = () => page.evaluate(() => ({ ...window.strahlerGame.stats, frames: window.strahlerGame.frames }));
+
+  before(async () => {
+    ({ page, record } = await openPage(browser, `${server.url}/game.html`));
+    // Settled: some frames drawn, tiles loaded and nothing left in flight for a moment. A failed
+    // tile ends the wait too: the tests below then report which request failed and why.
+    await page.waitForFunction(() => {
+      const g = window.strahlerGame;
+      if (g?.stats.failed > 0) return true;
+      if (!g || g.frames < 30 || g.stats.loaded < 1 || g.stats.inFlight > 0) return false;
+      g.quietSince ??= g.frames;
+      return g.frames - g.quietSince > 20;
+    }, null, { timeout: 2 * STEP_MS, polling: 100 });
+  }, { timeout: 2 * STEP_MS + 10_000 });
+
+  after(() => page?.close());
+
+  test('streams Draco mesh tiles without errors and refines the quadtree', async () => {
+    assertNoErrors(record);
+    const meshes = record.responses.filter((r) => /\/local\/\d+\/\d+\/\d+\.glb/.test(r.url));
+    assert.ok(meshes.length >= 1, 'no mesh tile was requested');
+    for (const mesh of meshes) assert.match(mesh.type, /^model\/gltf-binary/, mesh.url);
+    const s = await stats();
+    assert.ok(s.loaded >= 1 && s.visible >= 1 && s.failed === 0, JSON.stringify(s));
+    const minZoom = await page.evaluate(() => window.strahlerGame.streamer.minZoom);
+    assert.ok(s.maxVisibleZoom > minZoom, `no tile finer than the roots is drawn: ${JSON.stringify(s)}`);
+  });
+
+  test('draws a terrain that is not blank (screenshot)', async () => {
+    // Sky, fog and sea alone already vary: the terrain must be among what is drawn.
+    assert.ok((await stats()).visible >= 1, 'no terrain tile is drawn');
+    assertNotBlank(await page.locator('#scene').screenshot(), 'the game canvas');
+    writeFileSync(join(SCREENSHOTS, 'game.png'), await page.screenshot());
+  });
+
+  test('flies with the keyboard and evicts tiles it no longer needs', async () => {
+    const before = await page.evaluate(() => window.strahlerGame.camera.position.toArray());
+    await page.keyboard.down('KeyW');
+    await page.waitForFunction((z) => window.strahlerGame.camera.position.z < z - 1, before[2], { timeout: 10_000 });
+    await page.keyboard.up('KeyW');
+    // With no cache budget, tiles that leave the selection are evicted at once: turn around.
+    await page.evaluate(() => {
+      const g = window.strahlerGame;
+      g.streamer.maxCached = 0;
+      g.camera.rotation.y += Math.PI;
+    });
+    await page.waitForFunction(() => window.strahlerGame.stats.evicted > 0, null, { timeout: 10_000 });
+    assertNoErrors(record);
+  });
+});

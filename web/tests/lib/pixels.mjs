@@ -1,0 +1,17 @@
+// Is a screenshot more than a blank canvas? Luminance spread and colour count of a PNG.
+import { PNG } from 'pngjs';
+
+export function pixelStats(pngBytes) {
+  const { data, width, height } = PNG.sync.read(pngBytes);
+  let sum = 0, sumSq = 0;
+  const colours = new Set();
+  for (let i = 0; i < data.length; i += 4) {
+    const luminance = 0.2126 * data[i] + 0.7152 * data[i + 1] + 0.0722 * data[i + 2];
+    sum += luminance;
+    sumSq += luminance * luminance;
+    colours.add((data[i] >> 3) << 10 | (data[i + 1] >> 3) << 5 | data[i + 2] >> 3); // 15-bit colour
+  }
+  const n = width * height;
+  const mean = sum / n;
+  return { width, height, mean, stdDev: Math.sqrt(Math.max(0, sumSq / n - mean * mean)), colours: colours.size };
+}
