@@ -33,7 +33,8 @@ start_server() { # workers cache_mb
 stop_server() { kill -TERM "$server"; wait "$server" 2>/dev/null || true; }
 
 run_wrk() { # label url-base list
-  TILE_LIST="$3" wrk -t2 -c"$connections" -d"${seconds}s" --latency -s scripts/loadtest/tiles.lua "$2" \
+  TILE_LIST="$3" wrk -t2 -c"$connections" -d"${seconds}s" --timeout 20s --latency \
+    -s scripts/loadtest/tiles.lua "$2" \
     | grep RESULT | sed "s/^RESULT/$1/"
 }
 
@@ -46,6 +47,7 @@ while read -r path; do
   mkdir -p "$work/static$(dirname "$path")"
   curl -fsS "http://127.0.0.1:$port$path" -o "$work/static$path"
 done <"$work/sweep.txt"
+chmod -R a+rX "$work" # nginx's workers run as an unprivileged user
 cat >"$work/nginx.conf" <<NGINX
 worker_processes 2;
 pid $work/nginx.pid;

@@ -393,7 +393,8 @@ void TileServer::tile(const ServedWorld& w, tiling::SchemeKind scheme,
                      {"Cache-Control", kTileCacheControl},
                      {"Server-Timing", "eval;dur=" + std::to_string(t.evaluateMs) +
                                            ", encode;dur=" + std::to_string(t.encodeMs)}};
-        r.body = t.bytes;
+        // Aliases the cached tile: its bytes go out without a copy.
+        r.sharedBody = std::shared_ptr<const std::string>(outcome.tile, &t.bytes);
         r.route = "tile";
         done(std::move(r));
       });

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,6 +30,8 @@ struct Response {
   int status = 200;
   std::vector<std::pair<std::string, std::string>> headers; ///< e.g. Content-Type, ETag.
   std::string body;
+  /// When set, sent instead of `body` without copying (e.g. a cached tile's bytes).
+  std::shared_ptr<const std::string> sharedBody;
   std::string route = "other"; ///< Label for metrics ("tile", "tilejson", "health", ...).
   bool close = false;          ///< Close the connection after this response.
 };

@@ -125,7 +125,7 @@ void Listener::refuse(tcp::socket socket, const char* reason) noexcept {
     socket.write_some(net::buffer(bytes), ignored);
     socket.shutdown(tcp::socket::shutdown_both, ignored);
     socket.close(ignored);
-    state_->record("-", "-", "error", 503, wire->body().size(), 0.0);
+    state_->record("-", "-", "error", 503, bodySize(*wire), 0.0);
   } catch (...) {
     // Out of memory while refusing: the socket closes with its destructor.
   }

@@ -295,7 +295,7 @@ void Session::onWrite(ErrorCode ec) {
 void Session::record(const Exchange& exchange, bool sent) noexcept {
   const double ms =
       std::chrono::duration<double, std::milli>(Clock::now() - exchange.start).count();
-  const std::size_t bytes = sent ? exchange.message->body().size() : 0;
+  const std::size_t bytes = sent ? bodySize(*exchange.message) : 0;
   state_->record(exchange.method, exchange.target, exchange.route, exchange.message->result_int(),
                  bytes, ms);
 }

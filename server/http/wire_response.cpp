@@ -86,9 +86,12 @@ std::shared_ptr<WireResponse> toWireResponse(Response response, unsigned version
   wire->set(bhttp::field::access_control_allow_origin, "*");
   if (isBodiless(response.status))
     return wire;
-  wire->set(bhttp::field::content_length, std::to_string(response.body.size()));
+  std::shared_ptr<const std::string> body =
+      response.sharedBody ? std::move(response.sharedBody)
+                          : std::make_shared<const std::string>(std::move(response.body));
+  wire->set(bhttp::field::content_length, std::to_string(body->size()));
   if (!head)
-    wire->body() = std::move(response.body);
+    wire->body() = std::move(body);
   return wire;
 }
 
