@@ -9,8 +9,8 @@
 
 namespace strahler::primitives {
 
-/// River type of a primitive (mirrors analysis::RosgenType, kept here so that primitives
-/// and everything after them do not depend on the analysis stage).
+/// River type of a primitive: analysis::RosgenType as the world file and the evaluator keep
+/// it (a stored enum with fixed values, independent of the analysis code).
 enum class RiverType : std::uint8_t {
   kStraight = 0, ///< B: V-shaped valley, steep banks.
   kSinuous = 1,  ///< E: meanders, gentle banks.
