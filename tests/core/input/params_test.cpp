@@ -108,7 +108,7 @@ TEST(Params, EveryRangeIsEnforced) {
       {R"({"fillBranches": 6})", ErrorCode::kOutOfRange, "'fillBranches' = 6 is outside [1, 5]"},
       {R"({"slopeMin": 0.1, "slopeMax": 0.05})", ErrorCode::kInvalidInput,
        "'slopeMin' = 0.1 must not exceed 'slopeMax' = 0.05"},
-      {R"({"slopeMax": 0.3})", ErrorCode::kInvalidInput, "'slopeMax' = 0.3 must be less than"},
+      {R"({"slopeMax": 0.7})", ErrorCode::kInvalidInput, "'slopeMax' = 0.7 must be less than"},
       {R"({"slopeJitter": 1})", ErrorCode::kOutOfRange, "'slopeJitter' = 1 is outside [0, 1)"},
       {R"({"coastRamp": 0})", ErrorCode::kOutOfRange, "'coastRamp' = 0 m must be > 0 m"},
       {R"({"maxPriority": 13})", ErrorCode::kOutOfRange, "'maxPriority' = 13"},

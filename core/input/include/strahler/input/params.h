@@ -49,7 +49,7 @@ struct Params {
   double edgeLength = 1000.0; ///< e: length of every river edge, in [50, 20000].
   double sigma = 800.0;       ///< σ: min distance between non-adjacent edges; > e/√2.
   double delta = 300.0;       ///< δ: min distance from an edge to the coast Γ; in [0, 10 e).
-  double kappa = 0.3;         ///< κ: max slope between a new node and nearby nodes; (0, 10].
+  double kappa = 0.6;         ///< κ: max slope between a new node and nearby nodes; (0, 10].
   double zeta = 20.0;         ///< ζ: height window (m) of node selection, ≥ 0; 0 = lowest first.
   double probContinue = 0.2;  ///< Pc: rule 2.1, prolongation; [0, 1]; Pc + Pa + Ps = 1 ± 1e-6.
   double probAsymmetric = 0.7; ///< Pa: rule 2.2, asymmetric Strahler branching; [0, 1].
