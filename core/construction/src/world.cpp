@@ -13,6 +13,17 @@ namespace {
 
 using geometry::Vec2;
 
+/// geometry::closestPointOnSegment, the same operations in the same order, but visible to
+/// the optimiser here (the out-of-line call was a tenth of the profile at low zoom).
+inline Vec2 closestOnSegment(Vec2 p, Vec2 a, Vec2 b) noexcept {
+  const Vec2 ab = b - a;
+  const double len2 = lengthSquared(ab);
+  if (len2 == 0.0)
+    return a;
+  const double t = std::clamp(dot(p - a, ab) / len2, 0.0, 1.0);
+  return a + ab * t;
+}
+
 constexpr double kGridCell = 500.0; // m
 constexpr std::uint64_t kNoiseStream = 0x746572726e6full;
 constexpr double kShelfReach = 4.0 * CoastShape::kShelfWidth;
@@ -43,11 +54,32 @@ struct CurveHit {
 
 /// Only points closer than the primitive's radius matter (w = 0 beyond), so segments whose
 /// bounding box is farther than the best distance so far are skipped.
-CurveHit closestOnCurve(const primitives::RiverPrimitive& r, Vec2 p) {
+/// Segments of a river curve per chunk box (see World::riverChunks_).
+constexpr std::size_t kChunk = 8;
+
+/// Squared distance from p to box [lo, hi] (0 inside).
+double boxDistance2(Vec2 p, double loX, double loY, double hiX, double hiY) noexcept {
+  const double dx = std::max({loX - p.x, 0.0, p.x - hiX});
+  const double dy = std::max({loY - p.y, 0.0, p.y - hiY});
+  return dx * dx + dy * dy;
+}
+
+/// `chunks` holds the box of each run of kChunk segments: a run whose box is no closer than
+/// the bound is skipped whole, which skips exactly the segments the per-segment test would
+/// (a segment's box lies inside its run's), so the result is unchanged.
+CurveHit closestOnCurve(const primitives::RiverPrimitive& r, std::span<const geometry::Aabb> chunks,
+                        Vec2 p) {
   CurveHit best;
   double bound2 = r.radius * r.radius;
   const std::size_t n = r.curve.size();
   for (std::size_t k = 0; k + 1 < n; ++k) {
+    if (k % kChunk == 0) {
+      const geometry::Aabb& c = chunks[k / kChunk];
+      if (boxDistance2(p, c.min.x, c.min.y, c.max.x, c.max.y) >= bound2) {
+        k += kChunk - 1;
+        continue;
+      }
+    }
     const primitives::CurvePoint& a = r.curve[k];
     const primitives::CurvePoint& b = r.curve[k + 1];
     const double dx = std::max({std::min(a.position.x, b.position.x) - p.x, 0.0,
@@ -56,7 +88,7 @@ CurveHit closestOnCurve(const primitives::RiverPrimitive& r, Vec2 p) {
                                 p.y - std::max(a.position.y, b.position.y)});
     if (dx * dx + dy * dy >= bound2)
       continue;
-    const Vec2 q = geometry::closestPointOnSegment(p, a.position, b.position);
+    const Vec2 q = closestOnSegment(p, a.position, b.position);
     const double d2 = lengthSquared(p - q);
     if (d2 >= bound2)
       continue;
@@ -85,52 +117,157 @@ World::World(WorldData data)
     const primitives::TerrainPrimitive& t = data_.terrain[i];
     // Normalised so that the octave gains g^k sum to 1 over all octaves, whatever the spacing.
     const double g = t.roughness;
-    noiseScale_.push_back(t.amplitude * (1.0 - g) / (1.0 - std::pow(g, NoiseOctaves::kOctaves)));
+    const double scale = t.amplitude > 0.0
+                             ? t.amplitude * (1.0 - g) / (1.0 - std::pow(g, NoiseOctaves::kOctaves))
+                             : 0.0;
+    hot_.push_back({t.center, t.radius * t.radius, t.elevation, scale});
+    std::array<double, NoiseOctaves::kOctaves> gains{};
+    double gain = scale;
+    for (std::size_t k = 0; k < gains.size(); ++k, gain *= g)
+      gains[k] = gain;
+    octaveGains_.push_back(gains);
     terrainGrid_.insert(geometry::Aabb{t.center, t.center}.expanded(t.radius), i);
   }
   for (std::uint32_t i = 0; i < data_.rivers.size(); ++i) {
     riverSupport_.push_back(primitives::supportBox(data_.rivers[i]));
+    const std::vector<primitives::CurvePoint>& curve = data_.rivers[i].curve;
+    std::vector<geometry::Aabb> chunks;
+    for (std::size_t k = 0; k + 1 < curve.size(); k += kChunk) {
+      geometry::Aabb box;
+      for (std::size_t j = k; j <= std::min(k + kChunk, curve.size() - 1); ++j)
+        box.add(curve[j].position);
+      chunks.push_back(box);
+    }
+    riverChunks_.push_back(std::move(chunks));
     riverGrid_.insert(riverSupport_.back(), i);
   }
 }
 
-Sample World::terrainAt(Vec2 p, double spacing, std::span<const std::uint32_t> ids) const noexcept {
-  // Octaves that survive the LOD fade at this spacing (they get shorter, so a prefix).
-  int active = 0;
-  for (double wavelength = NoiseOctaves::kLongest;
-       active < NoiseOctaves::kOctaves && octaveFade(wavelength, spacing) > 0.0; wavelength *= 0.5)
-    ++active;
+template <int kActive>
+World::Blend World::blend(Vec2 p, std::span<const std::uint32_t> ids) const noexcept {
+  static_assert(kActive <= NoiseOctaves::kOctaves);
+  Blend b;
   double weight = 0.0, weightedHeight = 0.0;
-  std::array<double, NoiseOctaves::kOctaves> octaveAmplitude{}; // Σ w_i a_i g_i^k / norm_i
+  std::array<double, kActive + 1> amplitude{}; // Σ w_i a_i g_i^k / norm_i (+1: never empty)
   int count = 0;
+  const HotTerrain* hot = hot_.data();
   for (const std::uint32_t i : ids) {
-    const primitives::TerrainPrimitive& t = data_.terrain[i];
-    const double w = primitives::falloff(lengthSquared(p - t.center), t.radius * t.radius);
+    const HotTerrain& t = hot[i];
+    const double w = primitives::falloff(lengthSquared(p - t.center), t.radius2);
     if (w <= 0.0)
       continue;
     ++count;
     weight += w;
     weightedHeight += w * t.elevation;
-    if (t.amplitude > 0.0) {
-      const double g = t.roughness;
-      double gain = w * noiseScale_[i];
-      for (int k = 0; k < active; ++k, gain *= g)
-        octaveAmplitude[static_cast<std::size_t>(k)] += gain;
+    if (t.noiseScale != 0.0) {
+      // w · (a g^k / norm) with the per-primitive factors precomputed: independent products
+      // that vectorise over k, instead of a chain of multiplications by g.
+      const double* gains = octaveGains_[i].data();
+      for (int k = 0; k < kActive; ++k)
+        amplitude[static_cast<std::size_t>(k)] += w * gains[k];
     }
   }
+  b.weight = weight;
+  b.weightedHeight = weightedHeight;
+  b.count = count;
+  for (int k = 0; k < kActive; ++k)
+    b.octaveAmplitude[static_cast<std::size_t>(k)] = amplitude[static_cast<std::size_t>(k)];
+  return b;
+}
+
+Sample World::terrainAt(Vec2 p, double spacing, std::span<const std::uint32_t> ids) const noexcept {
+  // Octaves that survive the LOD fade at this spacing (they get shorter, so a prefix), and
+  // their fades. Each costs a division, and callers sweep rows of equal spacing, so they are
+  // kept per thread for the last spacing seen (a pure function of it: same values).
+  struct Fades {
+    double spacing = std::numeric_limits<double>::quiet_NaN();
+    int active = 0;
+    std::array<double, NoiseOctaves::kOctaves> fade{};
+  };
+  thread_local Fades fades;
+  if (!(fades.spacing == spacing)) {
+    int active = 0;
+    for (double wavelength = NoiseOctaves::kLongest;
+         active < NoiseOctaves::kOctaves && octaveFade(wavelength, spacing) > 0.0;
+         wavelength *= 0.5) {
+      fades.fade[static_cast<std::size_t>(active)] = octaveFade(wavelength, spacing);
+      ++active;
+    }
+    fades.active = active;
+    fades.spacing = spacing;
+  }
+  const int active = fades.active;
+  // The candidate loop, with the number of octaves fixed at compile time so the octave
+  // sums stay in registers (same operations in the same order as a runtime loop).
+  Blend b;
+  switch (active) {
+  case 0:
+    b = blend<0>(p, ids);
+    break;
+  case 1:
+    b = blend<1>(p, ids);
+    break;
+  case 2:
+    b = blend<2>(p, ids);
+    break;
+  case 3:
+    b = blend<3>(p, ids);
+    break;
+  case 4:
+    b = blend<4>(p, ids);
+    break;
+  case 5:
+    b = blend<5>(p, ids);
+    break;
+  case 6:
+    b = blend<6>(p, ids);
+    break;
+  case 7:
+    b = blend<7>(p, ids);
+    break;
+  case 8:
+    b = blend<8>(p, ids);
+    break;
+  case 9:
+    b = blend<9>(p, ids);
+    break;
+  case 10:
+    b = blend<10>(p, ids);
+    break;
+  case 11:
+    b = blend<11>(p, ids);
+    break;
+  default:
+    b = blend<12>(p, ids);
+    break;
+  }
+  const double weight = b.weight;
+  const std::array<double, NoiseOctaves::kOctaves>& octaveAmplitude = b.octaveAmplitude;
   if (weight <= 0.0)
     return {};
-  double noise = 0.0;
-  double wavelength = NoiseOctaves::kLongest;
-  for (int k = 0; k < active; ++k, wavelength *= 0.5) {
-    const double amplitude = octaveAmplitude[static_cast<std::size_t>(k)] / weight;
-    const double fade = octaveFade(wavelength, spacing);
+  // Wavelengths are powers of two, so multiplying by the (exact) reciprocal is bit-identical
+  // to dividing, and much cheaper. The amplitudes are normalised by one reciprocal of the
+  // weight rather than a division per octave. The octaves that matter are gathered first and
+  // evaluated two at a time (GradientNoise::at2), then summed in octave order.
+  const double perWeight = 1.0 / weight;
+  std::array<double, NoiseOctaves::kOctaves + 1> xs{}, ys{}, coefficient{}, value{};
+  int m = 0;
+  double inverse = 1.0 / NoiseOctaves::kLongest;
+  for (int k = 0; k < active; ++k, inverse *= 2.0) {
+    const double amplitude = octaveAmplitude[static_cast<std::size_t>(k)] * perWeight;
     if (amplitude < 1e-3)
       continue;
-    const Vec2 offset{37.1 * k, -11.7 * k};
-    noise += fade * amplitude * noise_.at(p / wavelength + offset);
+    const auto j = static_cast<std::size_t>(m++);
+    coefficient[j] = fades.fade[static_cast<std::size_t>(k)] * amplitude;
+    xs[j] = p.x * inverse + 37.1 * k;
+    ys[j] = p.y * inverse + -11.7 * k;
   }
-  Sample s = blendSums(weightedHeight, weight, count);
+  for (int j = 0; j < m; j += 2) // an odd count evaluates one padding lane (at 0, 0)
+    noise_.at2(xs.data() + j, ys.data() + j, value.data() + j);
+  double noise = 0.0;
+  for (int j = 0; j < m; ++j)
+    noise += coefficient[static_cast<std::size_t>(j)] * value[static_cast<std::size_t>(j)];
+  Sample s = blendSums(b.weightedHeight, weight, b.count);
   s.h += noise;
   return s;
 }
@@ -141,7 +278,7 @@ Sample World::riversAt(Vec2 p, std::span<const std::uint32_t> ids) const noexcep
     if (!riverSupport_[i].contains(p))
       continue;
     const primitives::RiverPrimitive& r = data_.rivers[i];
-    const CurveHit hit = closestOnCurve(r, p);
+    const CurveHit hit = closestOnCurve(r, riverChunks_[i], p);
     const double w = primitives::falloff(hit.distance * hit.distance, r.radius * r.radius);
     if (w <= 0.0)
       continue;

@@ -2,12 +2,43 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
+#include <utility>
 
 namespace strahler::tiling {
 namespace {
 
 using geometry::Aabb;
 using geometry::Vec2;
+
+/// Candidate lists of every bin, flattened: built from (bin, id) pairs by a stable counting
+/// sort, so each list keeps the ascending insertion order, with two allocations per tile
+/// instead of one per bin.
+class BinLists {
+public:
+  void add(std::size_t bin, std::uint32_t id) { pairs_.push_back({bin, id}); }
+  void finish(std::size_t bins) {
+    begin_.assign(bins + 1, 0);
+    for (const auto& [bin, id] : pairs_)
+      ++begin_[bin + 1];
+    for (std::size_t b = 0; b < bins; ++b)
+      begin_[b + 1] += begin_[b];
+    ids_.resize(pairs_.size());
+    std::vector<std::uint32_t> next(begin_.begin(), begin_.end() - 1);
+    for (const auto& [bin, id] : pairs_)
+      ids_[next[bin]++] = id;
+    pairs_.clear();
+    pairs_.shrink_to_fit();
+  }
+  std::span<const std::uint32_t> operator[](std::size_t bin) const noexcept {
+    return {ids_.data() + begin_[bin], ids_.data() + begin_[bin + 1]};
+  }
+
+private:
+  std::vector<std::pair<std::size_t, std::uint32_t>> pairs_;
+  std::vector<std::uint32_t> begin_;
+  std::vector<std::uint32_t> ids_;
+};
 
 /// A square grid of bins over a tile's samples; each bin lists (ascending) the primitives
 /// whose support meets it, and whether it lies wholly inland, beyond the coast band.
@@ -17,8 +48,6 @@ public:
     const Vec2 size = bounds.size();
     cell_ = {std::max(size.x, 1e-9) / n_, std::max(size.y, 1e-9) / n_};
     const auto count = static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_);
-    terrain_.resize(count);
-    rivers_.resize(count);
     coast_.assign(count, construction::World::Coast::kUnknown);
   }
 
@@ -37,8 +66,7 @@ public:
 
   /// Adds primitive `id` to every bin its box meets for which `meets(binBox)` holds.
   template <class Meets>
-  void add(std::vector<std::vector<std::uint32_t>>& lists, const Aabb& support, std::uint32_t id,
-           Meets&& meets) {
+  void add(BinLists& lists, const Aabb& support, std::uint32_t id, Meets&& meets) {
     if (!support.intersects(bounds_))
       return;
     const int i0 = of(support.min.x, bounds_.min.x, cell_.x),
@@ -48,23 +76,35 @@ public:
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i)
         if (meets(box(i, j)))
-          lists[static_cast<std::size_t>(j) * static_cast<std::size_t>(n_) +
-                static_cast<std::size_t>(i)]
-              .push_back(id);
+          lists.add(static_cast<std::size_t>(j) * static_cast<std::size_t>(n_) +
+                        static_cast<std::size_t>(i),
+                    id);
+  }
+  void finish() {
+    const auto count = static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_);
+    terrain_.finish(count);
+    rivers_.finish(count);
   }
 
   int perSide() const noexcept { return n_; }
-  std::vector<std::vector<std::uint32_t>>& terrain() noexcept { return terrain_; }
-  std::vector<std::vector<std::uint32_t>>& rivers() noexcept { return rivers_; }
+  BinLists& terrain() noexcept { return terrain_; }
+  BinLists& rivers() noexcept { return rivers_; }
   std::vector<construction::World::Coast>& coast() noexcept { return coast_; }
 
 private:
   Aabb bounds_;
   int n_;
   Vec2 cell_;
-  std::vector<std::vector<std::uint32_t>> terrain_, rivers_;
+  BinLists terrain_, rivers_;
   std::vector<construction::World::Coast> coast_;
 };
+
+/// Squared distance from p to box b (0 inside).
+double distanceToBox2(Vec2 p, const Aabb& b) {
+  const double dx = std::max({b.min.x - p.x, 0.0, p.x - b.max.x});
+  const double dy = std::max({b.min.y - p.y, 0.0, p.y - b.max.y});
+  return dx * dx + dy * dy;
+}
 
 double distanceToBox(Vec2 p, const Aabb& b) {
   const double dx = std::max({b.min.x - p.x, 0.0, p.x - b.max.x});
@@ -72,11 +112,14 @@ double distanceToBox(Vec2 p, const Aabb& b) {
   return std::hypot(dx, dy);
 }
 
-/// Bins of about kBinSide metres (the scale of a terrain primitive), at most 128 per side.
+/// Bins of about kBinSide metres (below the scale of a terrain primitive, so most candidates
+/// of a bin do cover its samples), at most kMaxBins per side.
+/// (Finer bins at low zoom cost more to build, and to classify by coast, than they save.)
+constexpr int kMaxBins = 128;
 int binsPerSide(const Aabb& bounds) {
-  constexpr double kBinSide = 250.0;
+  constexpr double kBinSide = 60.0;
   const double extent = std::max(bounds.size().x, bounds.size().y);
-  return static_cast<int>(std::clamp(std::round(extent / kBinSide), 1.0, 128.0));
+  return static_cast<int>(std::clamp(std::round(extent / kBinSide), 1.0, double(kMaxBins)));
 }
 
 } // namespace
@@ -108,8 +151,11 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
     const construction::BlockPrimitives& r = data.blocks[b];
     for (std::uint32_t i = r.terrainBegin; i < r.terrainEnd; ++i) {
       const primitives::TerrainPrimitive& t = data.terrain[i];
+      // Squared, without hypot: the slack (1e-9 relative) only ever admits extra candidates,
+      // which are harmless (w = 0 beyond the radius).
+      const double reach2 = t.radius * t.radius * (1.0 + 1e-9);
       bins.add(bins.terrain(), Aabb{t.center, t.center}.expanded(t.radius), i,
-               [&](const Aabb& box) { return distanceToBox(t.center, box) <= t.radius; });
+               [&](const Aabb& box) { return distanceToBox2(t.center, box) <= reach2; });
     }
     for (std::uint32_t i = r.riverBegin; i < r.riverEnd; ++i)
       bins.add(bins.rivers(), primitives::supportBox(data.rivers[i]), i,
@@ -117,6 +163,7 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
     local.terrainPrimitives += r.terrainEnd - r.terrainBegin;
     local.riverPrimitives += r.riverEnd - r.riverBegin;
   }
+  bins.finish();
   for (int j = 0; j < bins.perSide(); ++j)
     for (int i = 0; i < bins.perSide(); ++i) {
       const Aabb box = bins.box(i, j);

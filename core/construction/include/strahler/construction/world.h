@@ -6,6 +6,7 @@
 #include "strahler/geometry/polygon_index.h"
 #include "strahler/noise/gradient_noise.h"
 
+#include <array>
 #include <cstdint>
 #include <span>
 
@@ -72,6 +73,16 @@ public:
                           Coast coast = Coast::kUnknown) const noexcept;
 
 private:
+  /// Sums of the terrain blend at p over the candidates: weights, weighted elevations, and
+  /// the amplitude of each of the first kActive noise octaves.
+  struct Blend {
+    double weight = 0.0;
+    double weightedHeight = 0.0;
+    int count = 0;
+    std::array<double, NoiseOctaves::kOctaves> octaveAmplitude{};
+  };
+  template <int kActive>
+  Blend blend(geometry::Vec2 p, std::span<const std::uint32_t> ids) const noexcept;
   Sample terrainAt(geometry::Vec2 p, double spacing,
                    std::span<const std::uint32_t> ids) const noexcept;
   Sample riversAt(geometry::Vec2 p, std::span<const std::uint32_t> ids) const noexcept;
@@ -83,7 +94,20 @@ private:
   geometry::GridIndex terrainGrid_;
   geometry::GridIndex riverGrid_;
   std::vector<geometry::Aabb> riverSupport_; // per river primitive: its support box
-  std::vector<double> noiseScale_;           // per terrain primitive: amplitude / Σ_k g^k
+  // Per river primitive: the box of each run of 8 curve segments, so the closest-point search
+  // skips whole runs far from p instead of testing every segment's box.
+  std::vector<std::vector<geometry::Aabb>> riverChunks_;
+  // The fields terrainAt reads, per terrain primitive, packed together so the candidate
+  // loop touches one cache line per primitive instead of the whole TerrainPrimitive.
+  struct HotTerrain {
+    geometry::Vec2 center;
+    double radius2 = 0.0; // radius²
+    double elevation = 0.0;
+    double noiseScale = 0.0; // amplitude / Σ_k g^k, 0 without noise
+  };
+  std::vector<HotTerrain> hot_;
+  // Per terrain primitive: noiseScale · g^k, the amplitude of octave k per unit weight.
+  std::vector<std::array<double, NoiseOctaves::kOctaves>> octaveGains_;
   noise::GradientNoise noise_;
 };
 

@@ -63,6 +63,15 @@ private:
   // Horizontal bands for ray casting: segments whose y-range meets each band.
   double bandHeight_ = 1.0;
   std::vector<std::vector<std::uint32_t>> bands_;
+  // The grid's cells flattened (offsets into cellSegments_), for the nearest-boundary search,
+  // which walks cells itself so it can skip those farther than the best hit so far.
+  int nx_ = 1;
+  int ny_ = 1;
+  std::vector<std::uint32_t> cellBegin_;
+  std::vector<std::uint32_t> cellSegments_;
+  // Per cell: the segment nearest to its centre within a few cells (-1: none), the first
+  // bound of a nearest-boundary search from a point of that cell.
+  std::vector<std::int32_t> cellSeed_;
 };
 
 } // namespace strahler::geometry
