@@ -13,17 +13,6 @@ namespace {
 
 using geometry::Vec2;
 
-/// geometry::closestPointOnSegment, the same operations in the same order, but visible to
-/// the optimiser here (the out-of-line call was a tenth of the profile at low zoom).
-inline Vec2 closestOnSegment(Vec2 p, Vec2 a, Vec2 b) noexcept {
-  const Vec2 ab = b - a;
-  const double len2 = lengthSquared(ab);
-  if (len2 == 0.0)
-    return a;
-  const double t = std::clamp(dot(p - a, ab) / len2, 0.0, 1.0);
-  return a + ab * t;
-}
-
 constexpr double kGridCell = 500.0; // m
 constexpr std::uint64_t kNoiseStream = 0x746572726e6full;
 constexpr double kShelfReach = 4.0 * CoastShape::kShelfWidth;
@@ -88,7 +77,7 @@ CurveHit closestOnCurve(const primitives::RiverPrimitive& r, std::span<const geo
                                 p.y - std::max(a.position.y, b.position.y)});
     if (dx * dx + dy * dy >= bound2)
       continue;
-    const Vec2 q = closestOnSegment(p, a.position, b.position);
+    const Vec2 q = geometry::closestPointOnSegment(p, a.position, b.position);
     const double d2 = lengthSquared(p - q);
     if (d2 >= bound2)
       continue;

@@ -4,15 +4,6 @@
 
 namespace strahler::geometry {
 
-Vec2 closestPointOnSegment(Vec2 p, Vec2 a, Vec2 b) noexcept {
-  const Vec2 ab = b - a;
-  const double len2 = lengthSquared(ab);
-  if (len2 == 0.0)
-    return a;
-  const double t = std::clamp(dot(p - a, ab) / len2, 0.0, 1.0);
-  return a + ab * t;
-}
-
 double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) noexcept {
   return distance(p, closestPointOnSegment(p, a, b));
 }

@@ -7,20 +7,6 @@
 #include <limits>
 
 namespace strahler::geometry {
-namespace {
-
-/// geometry::closestPointOnSegment, the same operations in the same order, but visible to
-/// the optimiser here (the out-of-line call was a tenth of the profile at low zoom).
-inline Vec2 closestOnSegment(Vec2 p, Vec2 a, Vec2 b) noexcept {
-  const Vec2 ab = b - a;
-  const double len2 = lengthSquared(ab);
-  if (len2 == 0.0)
-    return a;
-  const double t = std::clamp(dot(p - a, ab) / len2, 0.0, 1.0);
-  return a + ab * t;
-}
-
-} // namespace
 
 PolygonIndex::PolygonIndex(MultiPolygon polygons, double cellSize)
     : polygons_(std::move(polygons)) {
@@ -136,7 +122,7 @@ BoundaryHit PolygonIndex::nearestBoundary(Vec2 p, double maxDistance) const noex
                   static_cast<std::size_t>(cx)];
     if (seed >= 0) {
       const auto i = static_cast<std::uint32_t>(seed);
-      const Vec2 q = closestOnSegment(p, segments_[i].a, segments_[i].b);
+      const Vec2 q = closestPointOnSegment(p, segments_[i].a, segments_[i].b);
       const double d2 = lengthSquared(q - p);
       if (d2 < best2) {
         best2 = d2;
@@ -163,7 +149,7 @@ BoundaryHit PolygonIndex::nearestBoundary(Vec2 p, double maxDistance) const noex
       if (boxDistance2(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
                        std::max(a.y, b.y)) >= best2)
         continue;
-      const Vec2 q = closestOnSegment(p, a, b);
+      const Vec2 q = closestPointOnSegment(p, a, b);
       const double d2 = lengthSquared(q - p);
       if (d2 < best2) {
         best2 = d2;

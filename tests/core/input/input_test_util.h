@@ -1,6 +1,8 @@
 #pragma once
 // Helpers shared by the input tests: error matchers, GeoJSON builders, temp files.
 
+#include "result_matchers.h"
+
 #include "strahler/base/result.h"
 
 #include <gtest/gtest.h>
@@ -15,21 +17,7 @@
 
 namespace strahler::input::testing {
 
-/// Passes when `result` is an error with `code` whose message contains `part`.
-template <class T>
-::testing::AssertionResult failsWith(const base::Result<T>& result, base::ErrorCode code,
-                                     std::string_view part) {
-  if (result.ok())
-    return ::testing::AssertionFailure() << "expected an error, got a value";
-  const base::Error& e = result.error();
-  if (e.code != code)
-    return ::testing::AssertionFailure() << "code " << base::errorCodeName(e.code) << ", expected "
-                                         << base::errorCodeName(code) << ": " << e.message;
-  if (e.message.find(part) == std::string::npos)
-    return ::testing::AssertionFailure()
-           << "message \"" << e.message << "\" lacks \"" << part << "\"";
-  return ::testing::AssertionSuccess() << e.message;
-}
+using strahler::testing::failsWith; // tests/support/result_matchers.h
 
 using Position = std::array<double, 2>;
 using RingPositions = std::vector<Position>;

@@ -2,6 +2,8 @@
 // Synthetic, valid WorldData for the store tests (every value on its quantum grid), plus
 // field-by-field comparison, error matchers and scratch directories.
 
+#include "result_matchers.h"
+
 #include "strahler/base/result.h"
 #include "strahler/construction/world_data.h"
 
@@ -26,21 +28,7 @@ construction::WorldData makeLargeWorld(double areaKm2 = 1000.0, std::uint64_t se
 ::testing::AssertionResult worldsEqual(const construction::WorldData& a,
                                        const construction::WorldData& b);
 
-/// Passes when `result` is an error with `code` whose message contains `part`.
-template <class T>
-::testing::AssertionResult failsWith(const base::Result<T>& result, base::ErrorCode code,
-                                     std::string_view part) {
-  if (result.ok())
-    return ::testing::AssertionFailure() << "expected an error, got a value";
-  const base::Error& e = result.error();
-  if (e.code != code)
-    return ::testing::AssertionFailure() << "code " << base::errorCodeName(e.code) << ", expected "
-                                         << base::errorCodeName(code) << ": " << e.message;
-  if (e.message.find(part) == std::string::npos)
-    return ::testing::AssertionFailure()
-           << "message \"" << e.message << "\" lacks \"" << part << "\"";
-  return ::testing::AssertionSuccess() << e.message;
-}
+using strahler::testing::failsWith; // tests/support/result_matchers.h
 
 /// A fresh, empty directory under the build tree named after the running test.
 std::string scratchDir();

@@ -56,27 +56,6 @@ public:
     return true;
   }
 
-  /// Calls fn(id) for the ids in the ring of cells at Chebyshev distance `r` around the
-  /// cell holding p (r = 0: that cell only). Returns false when the ring lies entirely
-  /// outside the grid, so expanding searches know when to stop.
-  template <class Fn> bool queryRing(Vec2 p, int r, Fn&& fn) const {
-    const int cx = cellX(p.x), cy = cellY(p.y);
-    bool any = false;
-    for (int y = cy - r; y <= cy + r; ++y) {
-      if (y < 0 || y >= ny_)
-        continue;
-      const bool edgeRow = (y == cy - r || y == cy + r);
-      for (int x = cx - r; x <= cx + r; x += (edgeRow || r == 0) ? 1 : 2 * r) {
-        if (x < 0 || x >= nx_)
-          continue;
-        any = true;
-        for (std::uint32_t id : cells_[index(x, y)])
-          fn(id);
-      }
-    }
-    return any;
-  }
-
 private:
   int cellX(double x) const noexcept {
     return std::clamp(static_cast<int>(std::floor((x - origin_.x) / cellSize_)), 0, nx_ - 1);
