@@ -1,5 +1,8 @@
 #include "strahler/construction/world.h"
 
+#include "evaluation_lanes.h"
+
+#include "strahler/base/lanes.h"
 #include "strahler/geometry/distance.h"
 #include "strahler/primitives/river_primitives.h"
 
@@ -33,64 +36,6 @@ geometry::Aabb worldBounds(const WorldData& data) {
   return box;
 }
 
-/// Distance from p to a river curve, with the water elevation and the fraction along the
-/// curve at the closest point.
-struct CurveHit {
-  double distance = std::numeric_limits<double>::infinity();
-  double elevation = 0.0;
-  double along = 0.0; // 0 upstream .. 1 downstream
-};
-
-/// Only points closer than the primitive's radius matter (w = 0 beyond), so segments whose
-/// bounding box is farther than the best distance so far are skipped.
-/// Segments of a river curve per chunk box (see World::riverChunks_).
-constexpr std::size_t kChunk = 8;
-
-/// Squared distance from p to box [lo, hi] (0 inside).
-double boxDistance2(Vec2 p, double loX, double loY, double hiX, double hiY) noexcept {
-  const double dx = std::max({loX - p.x, 0.0, p.x - hiX});
-  const double dy = std::max({loY - p.y, 0.0, p.y - hiY});
-  return dx * dx + dy * dy;
-}
-
-/// `chunks` holds the box of each run of kChunk segments: a run whose box is no closer than
-/// the bound is skipped whole, which skips exactly the segments the per-segment test would
-/// (a segment's box lies inside its run's), so the result is unchanged.
-CurveHit closestOnCurve(const primitives::RiverPrimitive& r, std::span<const geometry::Aabb> chunks,
-                        Vec2 p) {
-  CurveHit best;
-  double bound2 = r.radius * r.radius;
-  const std::size_t n = r.curve.size();
-  for (std::size_t k = 0; k + 1 < n; ++k) {
-    if (k % kChunk == 0) {
-      const geometry::Aabb& c = chunks[k / kChunk];
-      if (boxDistance2(p, c.min.x, c.min.y, c.max.x, c.max.y) >= bound2) {
-        k += kChunk - 1;
-        continue;
-      }
-    }
-    const primitives::CurvePoint& a = r.curve[k];
-    const primitives::CurvePoint& b = r.curve[k + 1];
-    const double dx = std::max({std::min(a.position.x, b.position.x) - p.x, 0.0,
-                                p.x - std::max(a.position.x, b.position.x)});
-    const double dy = std::max({std::min(a.position.y, b.position.y) - p.y, 0.0,
-                                p.y - std::max(a.position.y, b.position.y)});
-    if (dx * dx + dy * dy >= bound2)
-      continue;
-    const Vec2 q = geometry::closestPointOnSegment(p, a.position, b.position);
-    const double d2 = lengthSquared(p - q);
-    if (d2 >= bound2)
-      continue;
-    bound2 = d2;
-    const double span = distance(a.position, b.position);
-    const double t = span > 0.0 ? distance(a.position, q) / span : 0.0;
-    best.distance = std::sqrt(d2);
-    best.elevation = a.elevation + (b.elevation - a.elevation) * t;
-    best.along = (static_cast<double>(k) + t) / static_cast<double>(n - 1);
-  }
-  return best;
-}
-
 } // namespace
 
 double octaveFade(double wavelength, double spacing) noexcept {
@@ -102,28 +47,20 @@ double octaveFade(double wavelength, double spacing) noexcept {
 World::World(WorldData data)
     : data_(std::move(data)), land_(data_.land), terrainGrid_(worldBounds(data_), kGridCell),
       riverGrid_(worldBounds(data_), kGridCell), noise_(data_.params.seed ^ kNoiseStream) {
+  hot_.reserve(data_.terrain.size());
   for (std::uint32_t i = 0; i < data_.terrain.size(); ++i) {
     const primitives::TerrainPrimitive& t = data_.terrain[i];
-    // Normalised so that the octave gains g^k sum to 1 over all octaves, whatever the spacing.
-    const double g = t.roughness;
-    const double scale = t.amplitude > 0.0
-                             ? t.amplitude * (1.0 - g) / (1.0 - std::pow(g, NoiseOctaves::kOctaves))
-                             : 0.0;
-    hot_.push_back({t.center, t.radius * t.radius, t.elevation, scale});
-    std::array<double, NoiseOctaves::kOctaves> gains{};
-    double gain = scale;
-    for (std::size_t k = 0; k < gains.size(); ++k, gain *= g)
-      gains[k] = gain;
-    octaveGains_.push_back(gains);
+    hot_.push_back({t.center, t.radius * t.radius, t.elevation, std::max(t.amplitude, 0.0),
+                    std::clamp(t.roughness, 0.0, kMaxRoughness)});
     terrainGrid_.insert(geometry::Aabb{t.center, t.center}.expanded(t.radius), i);
   }
   for (std::uint32_t i = 0; i < data_.rivers.size(); ++i) {
     riverSupport_.push_back(primitives::supportBox(data_.rivers[i]));
     const std::vector<primitives::CurvePoint>& curve = data_.rivers[i].curve;
     std::vector<geometry::Aabb> chunks;
-    for (std::size_t k = 0; k + 1 < curve.size(); k += kChunk) {
+    for (std::size_t k = 0; k + 1 < curve.size(); k += detail::kChunk) {
       geometry::Aabb box;
-      for (std::size_t j = k; j <= std::min(k + kChunk, curve.size() - 1); ++j)
+      for (std::size_t j = k; j <= std::min(k + detail::kChunk, curve.size() - 1); ++j)
         box.add(curve[j].position);
       chunks.push_back(box);
     }
@@ -132,48 +69,12 @@ World::World(WorldData data)
   }
 }
 
-template <int kActive>
-World::Blend World::blend(Vec2 p, std::span<const std::uint32_t> ids) const noexcept {
-  static_assert(kActive <= NoiseOctaves::kOctaves);
-  Blend b;
-  double weight = 0.0, weightedHeight = 0.0;
-  std::array<double, kActive + 1> amplitude{}; // Σ w_i a_i g_i^k / norm_i (+1: never empty)
-  int count = 0;
-  const HotTerrain* hot = hot_.data();
-  for (const std::uint32_t i : ids) {
-    const HotTerrain& t = hot[i];
-    const double w = primitives::falloff(lengthSquared(p - t.center), t.radius2);
-    if (w <= 0.0)
-      continue;
-    ++count;
-    weight += w;
-    weightedHeight += w * t.elevation;
-    if (t.noiseScale != 0.0) {
-      // w · (a g^k / norm) with the per-primitive factors precomputed: independent products
-      // that vectorise over k, instead of a chain of multiplications by g.
-      const double* gains = octaveGains_[i].data();
-      for (int k = 0; k < kActive; ++k)
-        amplitude[static_cast<std::size_t>(k)] += w * gains[k];
-    }
-  }
-  b.weight = weight;
-  b.weightedHeight = weightedHeight;
-  b.count = count;
-  for (int k = 0; k < kActive; ++k)
-    b.octaveAmplitude[static_cast<std::size_t>(k)] = amplitude[static_cast<std::size_t>(k)];
-  return b;
-}
-
-Sample World::terrainAt(Vec2 p, double spacing, std::span<const std::uint32_t> ids) const noexcept {
-  // Octaves that survive the LOD fade at this spacing (they get shorter, so a prefix), and
-  // their fades. Each costs a division, and callers sweep rows of equal spacing, so they are
-  // kept per thread for the last spacing seen (a pure function of it: same values).
-  struct Fades {
-    double spacing = std::numeric_limits<double>::quiet_NaN();
-    int active = 0;
-    std::array<double, NoiseOctaves::kOctaves> fade{};
-  };
-  thread_local Fades fades;
+void World::terrainLanes(const double* xs, const double* ys, double spacing,
+                         std::span<const std::uint32_t> ids, double* h, double* w) const noexcept {
+  // The octaves that survive the LOD fade at this spacing (they get shorter, so a prefix)
+  // and their fades: each costs a division, and callers sweep rows of equal spacing, so they
+  // are kept per thread for the last spacing seen (a pure function of it: same values).
+  thread_local detail::OctaveFades fades{std::numeric_limits<double>::quiet_NaN(), 0, {}};
   if (!(fades.spacing == spacing)) {
     int active = 0;
     for (double wavelength = NoiseOctaves::kLongest;
@@ -185,98 +86,40 @@ Sample World::terrainAt(Vec2 p, double spacing, std::span<const std::uint32_t> i
     fades.active = active;
     fades.spacing = spacing;
   }
-  const int active = fades.active;
-  // The candidate loop, with the number of octaves fixed at compile time so the octave
-  // sums stay in registers (same operations in the same order as a runtime loop).
-  Blend b;
-  switch (active) {
-  case 0:
-    b = blend<0>(p, ids);
-    break;
-  case 1:
-    b = blend<1>(p, ids);
-    break;
-  case 2:
-    b = blend<2>(p, ids);
-    break;
-  case 3:
-    b = blend<3>(p, ids);
-    break;
-  case 4:
-    b = blend<4>(p, ids);
-    break;
-  case 5:
-    b = blend<5>(p, ids);
-    break;
-  case 6:
-    b = blend<6>(p, ids);
-    break;
-  case 7:
-    b = blend<7>(p, ids);
-    break;
-  case 8:
-    b = blend<8>(p, ids);
-    break;
-  case 9:
-    b = blend<9>(p, ids);
-    break;
-  case 10:
-    b = blend<10>(p, ids);
-    break;
-  case 11:
-    b = blend<11>(p, ids);
-    break;
-  default:
-    b = blend<12>(p, ids);
-    break;
-  }
-  const double weight = b.weight;
-  const std::array<double, NoiseOctaves::kOctaves>& octaveAmplitude = b.octaveAmplitude;
-  if (weight <= 0.0)
-    return {};
-  // Wavelengths are powers of two, so multiplying by the (exact) reciprocal is bit-identical
-  // to dividing, and much cheaper. The amplitudes are normalised by one reciprocal of the
-  // weight rather than a division per octave. The octaves that matter are gathered first and
-  // evaluated two at a time (GradientNoise::at2), then summed in octave order.
-  const double perWeight = 1.0 / weight;
-  std::array<double, NoiseOctaves::kOctaves + 1> xs{}, ys{}, coefficient{}, value{};
-  int m = 0;
-  double inverse = 1.0 / NoiseOctaves::kLongest;
-  for (int k = 0; k < active; ++k, inverse *= 2.0) {
-    const double amplitude = octaveAmplitude[static_cast<std::size_t>(k)] * perWeight;
-    if (amplitude < 1e-3)
-      continue;
-    const auto j = static_cast<std::size_t>(m++);
-    coefficient[j] = fades.fade[static_cast<std::size_t>(k)] * amplitude;
-    xs[j] = p.x * inverse + 37.1 * k;
-    ys[j] = p.y * inverse + -11.7 * k;
-  }
-  for (int j = 0; j < m; j += 2) // an odd count evaluates one padding lane (at 0, 0)
-    noise_.at2(xs.data() + j, ys.data() + j, value.data() + j);
-  double noise = 0.0;
-  for (int j = 0; j < m; ++j)
-    noise += coefficient[static_cast<std::size_t>(j)] * value[static_cast<std::size_t>(j)];
-  Sample s = blendSums(b.weightedHeight, weight, b.count);
-  s.h += noise;
-  return s;
+  detail::terrainLanes({hot_.data(), ids, &fades, &noise_, xs, ys, h, w});
 }
 
-Sample World::riversAt(Vec2 p, std::span<const std::uint32_t> ids) const noexcept {
-  Sample best;
+void World::riversLanes(const double* xs, const double* ys, std::span<const std::uint32_t> ids,
+                        Sample* out) const noexcept {
+  constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
+  std::array<double, kLanes> distance, elevation, along;
+  std::array<std::int64_t, kLanes> active;
+  for (std::size_t l = 0; l < kLanes; ++l)
+    out[l] = {};
   for (const std::uint32_t i : ids) {
-    if (!riverSupport_[i].contains(p))
+    bool any = false;
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      active[l] = riverSupport_[i].contains({xs[l], ys[l]}) ? -1 : 0;
+      any = any || active[l] != 0;
+    }
+    if (!any)
       continue;
     const primitives::RiverPrimitive& r = data_.rivers[i];
-    const CurveHit hit = closestOnCurve(r, riverChunks_[i], p);
-    const double w = primitives::falloff(hit.distance * hit.distance, r.radius * r.radius);
-    if (w <= 0.0)
-      continue;
-    const double width = r.widthUp + (r.widthDown - r.widthUp) * hit.along;
-    const double depth = r.depthUp + (r.depthDown - r.depthUp) * hit.along;
-    const Sample s{hit.elevation + primitives::riverProfile(r.type, width, depth, hit.distance), w};
-    best = best.w > 0.0 ? uniteByInfluence(best, s) : s;
+    detail::closestOnCurveLanes({&r, riverChunks_[i], xs, ys, active.data(), distance.data(),
+                                 elevation.data(), along.data()});
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      if (active[l] == 0)
+        continue;
+      const double d = distance[l];
+      const double w = primitives::falloff(d * d, r.radius * r.radius);
+      if (w <= 0.0)
+        continue;
+      const double width = r.widthUp + (r.widthDown - r.widthUp) * along[l];
+      const double depth = r.depthUp + (r.depthDown - r.depthUp) * along[l];
+      const Sample s{elevation[l] + primitives::riverProfile(r.type, width, depth, d), w};
+      out[l] = out[l].w > 0.0 ? uniteByInfluence(out[l], s) : s;
+    }
   }
-  return best;
 }
 
 double World::shelfReach() noexcept {
@@ -313,12 +156,43 @@ World::Evaluation World::evaluateFrom(Vec2 p, double spacing,
                                       std::span<const std::uint32_t> terrain,
                                       std::span<const std::uint32_t> rivers,
                                       Coast coast) const noexcept {
+  std::array<double, base::kLanes> xs, ys, h, w;
+  xs.fill(p.x);
+  ys.fill(p.y);
+  std::array<Sample, base::kLanes> river;
+  terrainLanes(xs.data(), ys.data(), spacing, terrain, h.data(), w.data());
+  riversLanes(xs.data(), ys.data(), rivers, river.data());
   Evaluation e;
-  e.terrain = terrainAt(p, spacing, terrain);
-  e.rivers = riversAt(p, rivers);
+  e.terrain = {h[0], w[0]};
+  e.rivers = river[0];
   e.tree = replace(e.terrain, e.rivers).h;
   e.height = coast == Coast::kInland ? e.tree : shapeCoast(p, e.terrain, e.rivers, coast);
   return e;
+}
+
+void World::heightsFrom(std::span<const Vec2> points, double spacing,
+                        std::span<const std::uint32_t> terrain,
+                        std::span<const std::uint32_t> rivers, Coast coast,
+                        std::span<double> heights) const noexcept {
+  constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
+  std::array<double, kLanes> xs, ys, h, w;
+  std::array<Sample, kLanes> river;
+  for (std::size_t begin = 0; begin < points.size(); begin += kLanes) {
+    const std::size_t n = std::min(kLanes, points.size() - begin);
+    for (std::size_t l = 0; l < kLanes; ++l) { // short groups repeat their last point
+      const Vec2 p = points[begin + std::min(l, n - 1)];
+      xs[l] = p.x;
+      ys[l] = p.y;
+    }
+    terrainLanes(xs.data(), ys.data(), spacing, terrain, h.data(), w.data());
+    riversLanes(xs.data(), ys.data(), rivers, river.data());
+    for (std::size_t l = 0; l < n; ++l) {
+      const Vec2 p = points[begin + l];
+      const Sample t{h[l], w[l]};
+      const Sample r = river[l];
+      heights[begin + l] = coast == Coast::kInland ? replace(t, r).h : shapeCoast(p, t, r, coast);
+    }
+  }
 }
 
 } // namespace strahler::construction

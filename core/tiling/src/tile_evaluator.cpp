@@ -1,7 +1,11 @@
 #include "strahler/tiling/tile_evaluator.h"
 
+#include "strahler/base/lanes.h"
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <span>
 #include <utility>
 
@@ -11,92 +15,144 @@ namespace {
 using geometry::Aabb;
 using geometry::Vec2;
 
-/// Candidate lists of every bin, flattened: built from (bin, id) pairs by a stable counting
-/// sort, so each list keeps the ascending insertion order, with two allocations per tile
-/// instead of one per bin.
-class BinLists {
+/// Which of a sequence of intervals [lo[i], hi[i]] meet [a, b]: when both ends are monotone in
+/// the same direction (rows and columns of a tile, except for tiles wrapping half the globe)
+/// two binary searches find them, otherwise every index is returned (the caller tests each).
+class IntervalRun {
 public:
-  void add(std::size_t bin, std::uint32_t id) { pairs_.push_back({bin, id}); }
-  void finish(std::size_t bins) {
-    begin_.assign(bins + 1, 0);
-    for (const auto& [bin, id] : pairs_)
-      ++begin_[bin + 1];
-    for (std::size_t b = 0; b < bins; ++b)
-      begin_[b + 1] += begin_[b];
-    ids_.resize(pairs_.size());
-    std::vector<std::uint32_t> next(begin_.begin(), begin_.end() - 1);
-    for (const auto& [bin, id] : pairs_)
-      ids_[next[bin]++] = id;
-    pairs_.clear();
-    pairs_.shrink_to_fit();
+  IntervalRun(std::vector<double> lo, std::vector<double> hi)
+      : lo_(std::move(lo)), hi_(std::move(hi)) {
+    increasing_ = std::is_sorted(lo_.begin(), lo_.end()) && std::is_sorted(hi_.begin(), hi_.end());
+    decreasing_ =
+        std::is_sorted(lo_.rbegin(), lo_.rend()) && std::is_sorted(hi_.rbegin(), hi_.rend());
   }
-  std::span<const std::uint32_t> operator[](std::size_t bin) const noexcept {
-    return {ids_.data() + begin_[bin], ids_.data() + begin_[bin + 1]};
+  /// Whether meeting() finds exactly the intervals by binary search.
+  bool monotone() const noexcept { return increasing_ || decreasing_; }
+  /// [first, last) holding every i whose interval meets [a, b].
+  std::pair<int, int> meeting(double a, double b) const noexcept {
+    const auto n = static_cast<int>(lo_.size());
+    auto index = [&](const std::vector<double>& v, auto&& before) {
+      return static_cast<int>(std::partition_point(v.begin(), v.end(), before) - v.begin());
+    };
+    if (increasing_)
+      return {index(hi_, [&](double h) { return h < a; }),
+              index(lo_, [&](double l) { return l <= b; })};
+    if (decreasing_)
+      return {index(lo_, [&](double l) { return l > b; }),
+              index(hi_, [&](double h) { return h >= a; })};
+    return {0, n};
   }
 
 private:
-  std::vector<std::pair<std::size_t, std::uint32_t>> pairs_;
-  std::vector<std::uint32_t> begin_;
-  std::vector<std::uint32_t> ids_;
+  std::vector<double> lo_, hi_;
+  bool increasing_ = false, decreasing_ = false;
 };
 
-/// A square grid of bins over a tile's samples; each bin lists (ascending) the primitives
-/// whose support meets it, and whether it lies wholly inland, beyond the coast band.
+/// Bins over a tile's samples in index space: a bin is `groups` runs of base::kLanes samples
+/// of a row times `rows` rows, so every run of kLanes samples lies in one bin and is evaluated
+/// in one vector pass. Each bin lists (ascending) the primitives whose support meets the box
+/// of its samples, and whether it lies wholly inland or far at sea.
 class Bins {
 public:
-  Bins(const Aabb& bounds, int perSide) : bounds_(bounds), n_(perSide) {
-    const Vec2 size = bounds.size();
-    cell_ = {std::max(size.x, 1e-9) / n_, std::max(size.y, 1e-9) / n_};
-    const auto count = static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_);
-    coast_.assign(count, construction::World::Coast::kUnknown);
+  /// Bins over `grid`; no primitive reaches outside `reach` (used when rows or columns are not
+  /// monotone in the local frame: tiles spanning half the globe).
+  Bins(const SampleGrid& grid, int groups, int rows, const Aabb& reach)
+      : width_(static_cast<std::size_t>(grid.width)), groups_(groups), rows_(rows) {
+    const int runs = (grid.width + base::kLanes - 1) / base::kLanes;
+    nx_ = (runs + groups - 1) / groups;
+    ny_ = (grid.height + rows - 1) / rows;
+    boxes_.resize(count());
+    for (int r = 0; r < grid.height; ++r)
+      for (int c = 0; c < grid.width; ++c)
+        boxes_[binOf(r, c)].add(grid.points[static_cast<std::size_t>(r) * width_ + c]);
+    std::vector<double> colLo(nx_, kInf), colHi(nx_, -kInf), rowLo(ny_, kInf), rowHi(ny_, -kInf);
+    for (int j = 0; j < ny_; ++j)
+      for (int i = 0; i < nx_; ++i) {
+        const Aabb& b = box(i, j);
+        colLo[i] = std::min(colLo[i], b.min.x);
+        colHi[i] = std::max(colHi[i], b.max.x);
+        rowLo[j] = std::min(rowLo[j], b.min.y);
+        rowHi[j] = std::max(rowHi[j], b.max.y);
+      }
+    columns_.emplace(std::move(colLo), std::move(colHi));
+    rows_run_.emplace(std::move(rowLo), std::move(rowHi));
+    if (!columns_->monotone() || !rows_run_->monotone())
+      for (std::size_t b = 0; b < count(); ++b)
+        if (!boxes_[b].empty() && boxes_[b].intersects(reach))
+          reachable_.push_back(b);
+    terrainBegin_.assign(count() + 1, 0);
+    riverBegin_.assign(count() + 1, 0);
   }
 
-  int of(double v, double origin, double cell) const noexcept {
-    return std::clamp(static_cast<int>(std::floor((v - origin) / cell)), 0, n_ - 1);
+  std::size_t count() const noexcept { return static_cast<std::size_t>(nx_) * ny_; }
+  std::size_t binOf(int row, int col) const noexcept {
+    return static_cast<std::size_t>(row / rows_) * nx_ +
+           static_cast<std::size_t>(col / base::kLanes / groups_);
   }
-  std::size_t binAt(Vec2 p) const noexcept {
-    return static_cast<std::size_t>(of(p.y, bounds_.min.y, cell_.y)) *
-               static_cast<std::size_t>(n_) +
-           static_cast<std::size_t>(of(p.x, bounds_.min.x, cell_.x));
-  }
-  Aabb box(int i, int j) const noexcept {
-    const Vec2 lo{bounds_.min.x + i * cell_.x, bounds_.min.y + j * cell_.y};
-    return {lo, lo + cell_};
+  const Aabb& box(int i, int j) const noexcept {
+    return boxes_[static_cast<std::size_t>(j) * nx_ + i];
   }
 
-  /// Adds primitive `id` to every bin its box meets for which `meets(binBox)` holds.
-  template <class Meets>
-  void add(BinLists& lists, const Aabb& support, std::uint32_t id, Meets&& meets) {
-    if (!support.intersects(bounds_))
+  /// Calls f(bin) for every bin whose box meets `support` and satisfies meets(box).
+  template <class Meets, class F> void forEachBin(const Aabb& support, Meets&& meets, F&& f) const {
+    if (!columns_->monotone() || !rows_run_->monotone()) {
+      for (const std::size_t bin : reachable_)
+        if (boxes_[bin].intersects(support) && meets(boxes_[bin]))
+          f(bin);
       return;
-    const int i0 = of(support.min.x, bounds_.min.x, cell_.x),
-              i1 = of(support.max.x, bounds_.min.x, cell_.x);
-    const int j0 = of(support.min.y, bounds_.min.y, cell_.y),
-              j1 = of(support.max.y, bounds_.min.y, cell_.y);
-    for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i)
-        if (meets(box(i, j)))
-          lists.add(static_cast<std::size_t>(j) * static_cast<std::size_t>(n_) +
-                        static_cast<std::size_t>(i),
-                    id);
-  }
-  void finish() {
-    const auto count = static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_);
-    terrain_.finish(count);
-    rivers_.finish(count);
+    }
+    const auto [i0, i1] = columns_->meeting(support.min.x, support.max.x);
+    const auto [j0, j1] = rows_run_->meeting(support.min.y, support.max.y);
+    for (int j = j0; j < j1; ++j)
+      for (int i = i0; i < i1; ++i) {
+        const Aabb& b = box(i, j);
+        if (!b.empty() && b.intersects(support) && meets(b))
+          f(static_cast<std::size_t>(j) * nx_ + i);
+      }
   }
 
-  int perSide() const noexcept { return n_; }
-  BinLists& terrain() noexcept { return terrain_; }
-  BinLists& rivers() noexcept { return rivers_; }
-  std::vector<construction::World::Coast>& coast() noexcept { return coast_; }
+  /// Adds primitive `id` to the terrain (or river) list of `bin`. Lists keep the order of
+  /// addition; finish() must follow the last addition.
+  void addTerrain(std::size_t bin, std::uint32_t id) { terrainPairs_.push_back({bin, id}); }
+  void addRiver(std::size_t bin, std::uint32_t id) { riverPairs_.push_back({bin, id}); }
+  void finish() {
+    sortByBin(terrainPairs_, terrainBegin_, terrain_);
+    sortByBin(riverPairs_, riverBegin_, rivers_);
+  }
+
+  std::span<const std::uint32_t> terrain(std::size_t bin) const noexcept {
+    return {terrain_.data() + terrainBegin_[bin], terrain_.data() + terrainBegin_[bin + 1]};
+  }
+  std::span<const std::uint32_t> rivers(std::size_t bin) const noexcept {
+    return {rivers_.data() + riverBegin_[bin], rivers_.data() + riverBegin_[bin + 1]};
+  }
+  int perRow() const noexcept { return nx_; }
+  int perColumn() const noexcept { return ny_; }
 
 private:
-  Aabb bounds_;
-  int n_;
-  Vec2 cell_;
-  BinLists terrain_, rivers_;
-  std::vector<construction::World::Coast> coast_;
+  static constexpr double kInf = std::numeric_limits<double>::infinity();
+  using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>; // (bin, id)
+
+  /// Stable counting sort of (bin, id) pairs into per-bin lists.
+  void sortByBin(Pairs& pairs, std::vector<std::uint32_t>& begin, std::vector<std::uint32_t>& ids) {
+    for (const auto& [bin, id] : pairs)
+      ++begin[bin + 1];
+    for (std::size_t b = 0; b < count(); ++b)
+      begin[b + 1] += begin[b];
+    ids.resize(pairs.size());
+    std::vector<std::uint32_t> next(begin.begin(), begin.end() - 1);
+    for (const auto& [bin, id] : pairs)
+      ids[next[bin]++] = id;
+    pairs = {};
+  }
+
+  std::size_t width_;
+  int groups_, rows_, nx_ = 0, ny_ = 0;
+  std::vector<Aabb> boxes_;
+  std::optional<IntervalRun> columns_, rows_run_;
+  std::vector<std::size_t> reachable_; // bins meeting `reach`, when not monotone
+  Pairs terrainPairs_, riverPairs_;
+  std::vector<std::uint32_t> terrainBegin_, riverBegin_, terrain_, rivers_;
 };
 
 /// Squared distance from p to box b (0 inside).
@@ -113,13 +169,18 @@ double distanceToBox(Vec2 p, const Aabb& b) {
 }
 
 /// Bins of about kBinSide metres (below the scale of a terrain primitive, so most candidates
-/// of a bin do cover its samples), at most kMaxBins per side.
-/// (Finer bins at low zoom cost more to build, and to classify by coast, than they save.)
-constexpr int kMaxBins = 128;
-int binsPerSide(const Aabb& bounds) {
-  constexpr double kBinSide = 60.0;
-  const double extent = std::max(bounds.size().x, bounds.size().y);
-  return static_cast<int>(std::clamp(std::round(extent / kBinSide), 1.0, double(kMaxBins)));
+/// of a bin do cover its samples) and never narrower than one run of base::kLanes samples
+/// or shorter than one row.
+constexpr double kBinSide = 60.0;
+std::pair<int, int> binShape(const SampleGrid& grid) {
+  const Vec2 size = grid.bounds.size();
+  const double dx = size.x / std::max(grid.width - 1, 1);
+  const double dy = size.y / std::max(grid.height - 1, 1);
+  const int runs = (grid.width + base::kLanes - 1) / base::kLanes;
+  const double groups = std::round(kBinSide / std::max(dx * base::kLanes, 1e-9));
+  const double rows = std::round(kBinSide / std::max(dy, 1e-9));
+  return {static_cast<int>(std::clamp(groups, 1.0, static_cast<double>(std::max(runs, 1)))),
+          static_cast<int>(std::clamp(rows, 4.0, static_cast<double>(std::max(grid.height, 1))))};
 }
 
 } // namespace
@@ -142,10 +203,25 @@ construction::World::Coast TileEvaluator::coastOf(Vec2 center, double halfDiagon
 
 std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* stats) const {
   const construction::WorldData& data = world_.data();
+  std::vector<double> heights(grid.points.size());
+  if (grid.points.empty())
+    return heights;
   const std::vector<std::uint32_t> blocks = blocks_.blocksMeeting(grid.bounds);
-  Bins bins(grid.bounds, binsPerSide(grid.bounds));
+  const auto [groups, rows] = binShape(grid);
   TileStats local;
   local.blocks = blocks.size();
+  Aabb reach;
+  for (std::uint32_t b : blocks) {
+    const construction::BlockPrimitives& r = data.blocks[b];
+    for (std::uint32_t i = r.terrainBegin; i < r.terrainEnd; ++i)
+      reach.add(
+          Aabb{data.terrain[i].center, data.terrain[i].center}.expanded(data.terrain[i].radius));
+    for (std::uint32_t i = r.riverBegin; i < r.riverEnd; ++i)
+      reach.add(world_.riverSupport(i));
+    local.terrainPrimitives += r.terrainEnd - r.terrainBegin;
+    local.riverPrimitives += r.riverEnd - r.riverBegin;
+  }
+  Bins bins(grid, groups, rows, reach);
   // Blocks are ascending and their ranges contiguous, so primitive ids arrive ascending.
   for (std::uint32_t b : blocks) {
     const construction::BlockPrimitives& r = data.blocks[b];
@@ -154,35 +230,34 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
       // Squared, without hypot: the slack (1e-9 relative) only ever admits extra candidates,
       // which are harmless (w = 0 beyond the radius).
       const double reach2 = t.radius * t.radius * (1.0 + 1e-9);
-      bins.add(bins.terrain(), Aabb{t.center, t.center}.expanded(t.radius), i,
-               [&](const Aabb& box) { return distanceToBox2(t.center, box) <= reach2; });
+      bins.forEachBin(
+          Aabb{t.center, t.center}.expanded(t.radius),
+          [&](const Aabb& box) { return distanceToBox2(t.center, box) <= reach2; },
+          [&](std::size_t bin) { bins.addTerrain(bin, i); });
     }
     for (std::uint32_t i = r.riverBegin; i < r.riverEnd; ++i)
-      bins.add(bins.rivers(), primitives::supportBox(data.rivers[i]), i,
-               [](const Aabb&) { return true; });
-    local.terrainPrimitives += r.terrainEnd - r.terrainBegin;
-    local.riverPrimitives += r.riverEnd - r.riverBegin;
+      bins.forEachBin(
+          world_.riverSupport(i), [](const Aabb&) { return true; },
+          [&](std::size_t bin) { bins.addRiver(bin, i); });
   }
   bins.finish();
-  for (int j = 0; j < bins.perSide(); ++j)
-    for (int i = 0; i < bins.perSide(); ++i) {
-      const Aabb box = bins.box(i, j);
-      const double halfDiagonal = 0.5 * length(box.size());
-      bins.coast()[static_cast<std::size_t>(j * bins.perSide() + i)] =
-          coastOf(box.center(), halfDiagonal);
+  std::vector<construction::World::Coast> coast(bins.count());
+  for (int j = 0; j < bins.perColumn(); ++j)
+    for (int i = 0; i < bins.perRow(); ++i) {
+      const Aabb& box = bins.box(i, j);
+      coast[static_cast<std::size_t>(j) * static_cast<std::size_t>(bins.perRow()) +
+            static_cast<std::size_t>(i)] = coastOf(box.center(), 0.5 * length(box.size()));
     }
-  std::vector<double> heights(grid.points.size());
+  const auto width = static_cast<std::size_t>(grid.width);
   for (int row = 0; row < grid.height; ++row) {
     const double spacing = grid.rowSpacing[static_cast<std::size_t>(row)];
-    for (int col = 0; col < grid.width; ++col) {
-      const std::size_t k = static_cast<std::size_t>(row) * static_cast<std::size_t>(grid.width) +
-                            static_cast<std::size_t>(col);
-      const Vec2 p = grid.points[k];
-      const std::size_t bin = bins.binAt(p);
-      heights[k] =
-          world_
-              .evaluateFrom(p, spacing, bins.terrain()[bin], bins.rivers()[bin], bins.coast()[bin])
-              .height;
+    for (int col = 0; col < grid.width; col += base::kLanes) {
+      const std::size_t k = static_cast<std::size_t>(row) * width + static_cast<std::size_t>(col);
+      const std::size_t n =
+          std::min(static_cast<std::size_t>(base::kLanes), width - static_cast<std::size_t>(col));
+      const std::size_t bin = bins.binOf(row, col);
+      world_.heightsFrom({grid.points.data() + k, n}, spacing, bins.terrain(bin), bins.rivers(bin),
+                         coast[bin], {heights.data() + k, n});
     }
   }
   if (stats)

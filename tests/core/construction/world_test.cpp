@@ -1,7 +1,10 @@
 #include "test_worlds.h"
 
+#include "strahler/base/random.h"
 #include "strahler/construction/world.h"
 #include "strahler/construction/world_builder.h"
+#include "strahler/geometry/distance.h"
+#include "strahler/primitives/river_primitives.h"
 #include "strahler/quality/drainage.h"
 #include "strahler/quality/river_profile.h"
 #include "strahler/quality/world_raster.h"
@@ -9,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 
 namespace strahler::construction {
@@ -24,6 +28,93 @@ const World& defaultWorld() {
     return std::make_unique<World>(std::move(data).value());
   }();
   return *world;
+}
+
+/// B(T…) at p written out plainly from its definition (world.h), every primitive visited:
+/// the reference for the vectorised evaluator.
+Sample referenceTerrain(const World& world, Vec2 p, double spacing) {
+  const noise::GradientNoise noise(world.data().params.seed ^ 0x746572726e6full);
+  double weight = 0.0, weightedHeight = 0.0, amplitude = 0.0, roughness = 0.0;
+  int count = 0;
+  for (const primitives::TerrainPrimitive& t : world.data().terrain) {
+    const double w = primitives::falloff(lengthSquared(p - t.center), t.radius * t.radius);
+    if (w <= 0.0)
+      continue;
+    ++count;
+    weight += w;
+    weightedHeight += w * t.elevation;
+    amplitude += w * t.amplitude;
+    roughness += w * std::min(t.roughness, World::kMaxRoughness);
+  }
+  if (count == 0)
+    return {};
+  const double a = amplitude / weight, g = roughness / weight;
+  double sum = 0.0;
+  for (int k = 0; k < NoiseOctaves::kOctaves; ++k) {
+    const double wavelength = NoiseOctaves::kLongest / std::ldexp(1.0, k);
+    const double octave =
+        a * (1.0 - g) / (1.0 - std::pow(g, NoiseOctaves::kOctaves)) * std::pow(g, k);
+    if (octave < 1e-3)
+      break;
+    sum += octaveFade(wavelength, spacing) * octave *
+           noise.at({p.x / wavelength + 37.1 * k, p.y / wavelength - 11.7 * k});
+  }
+  return {weightedHeight / weight + sum, weight / count};
+}
+
+/// U(R…) at p from its definition, every segment of every river visited.
+Sample referenceRivers(const World& world, Vec2 p) {
+  Sample best;
+  for (const primitives::RiverPrimitive& r : world.data().rivers) {
+    double nearest = std::numeric_limits<double>::infinity(), elevation = 0.0, along = 0.0;
+    for (std::size_t k = 0; k + 1 < r.curve.size(); ++k) {
+      const Vec2 a = r.curve[k].position, b = r.curve[k + 1].position;
+      const Vec2 q = geometry::closestPointOnSegment(p, a, b);
+      const double d = distance(p, q);
+      if (d >= nearest)
+        continue;
+      const double t = distance(a, b) > 0.0 ? distance(a, q) / distance(a, b) : 0.0;
+      nearest = d;
+      elevation = r.curve[k].elevation + (r.curve[k + 1].elevation - r.curve[k].elevation) * t;
+      along = (static_cast<double>(k) + t) / static_cast<double>(r.curve.size() - 1);
+    }
+    const double w = primitives::falloff(nearest * nearest, r.radius * r.radius);
+    if (w <= 0.0)
+      continue;
+    const double width = r.widthUp + (r.widthDown - r.widthUp) * along;
+    const double depth = r.depthUp + (r.depthDown - r.depthUp) * along;
+    const Sample s{elevation + primitives::riverProfile(r.type, width, depth, nearest), w};
+    best = best.w > 0.0 ? uniteByInfluence(best, s) : s;
+  }
+  return best;
+}
+
+TEST(World, EvaluationMatchesThePlainDefinition) {
+  const World& world = defaultWorld();
+  const geometry::Aabb box = world.land().bounds();
+  base::Rng rng(11);
+  int onRivers = 0;
+  for (int i = 0; i < 400; ++i) {
+    // Half the points next to a river curve, the others anywhere on the island's box.
+    Vec2 p{rng.uniform(box.min.x, box.max.x), rng.uniform(box.min.y, box.max.y)};
+    if (i % 2 == 0) {
+      const auto& rivers = world.data().rivers;
+      const primitives::RiverPrimitive& r =
+          rivers[rng.below(static_cast<std::uint32_t>(rivers.size()))];
+      p = r.curve[rng.below(static_cast<std::uint32_t>(r.curve.size()))].position +
+          Vec2{rng.uniform(-60.0, 60.0), rng.uniform(-60.0, 60.0)};
+    }
+    const double spacing = std::ldexp(1.0, static_cast<int>(rng.below(10))) * 0.5;
+    const World::Evaluation e = world.evaluate(p, spacing);
+    const Sample terrain = referenceTerrain(world, p, spacing);
+    const Sample rivers = referenceRivers(world, p);
+    EXPECT_NEAR(e.terrain.h, terrain.h, 1e-9) << p.x << ", " << p.y << " spacing " << spacing;
+    EXPECT_NEAR(e.terrain.w, terrain.w, 1e-12);
+    EXPECT_NEAR(e.rivers.h, rivers.h, 1e-9) << p.x << ", " << p.y;
+    EXPECT_NEAR(e.rivers.w, rivers.w, 1e-12);
+    onRivers += rivers.w > 0.0;
+  }
+  EXPECT_GT(onRivers, 150);
 }
 
 TEST(World, RiversNeverRiseDownstream) {

@@ -139,5 +139,40 @@ TEST(TileEvaluator, SameTilesOnAnyThreadCount) {
   EXPECT_EQ(parallel, sequential);
 }
 
+/// Restores the instruction set a test changed.
+struct InstructionSetGuard {
+  construction::InstructionSet saved = construction::instructionSet();
+  ~InstructionSetGuard() { construction::useInstructionSet(saved); }
+};
+
+TEST(TileEvaluator, SameBitsOnEveryInstructionSet) {
+  const InstructionSetGuard guard;
+  const construction::World& world = islandWorld();
+  const TileEvaluator evaluator(world);
+  const Vec2 c = world.data().projectionCenter;
+  std::vector<SampleGrid> grids;
+  for (int z : {0, 9, 12, 15, 18})
+    grids.push_back(webScheme().rasterGrid(webTileAt(c.x + 0.05, c.y - 0.03, z), 40));
+  grids.push_back(localScheme().meshGrid({4, 7, 9}, 20));
+  ASSERT_TRUE(construction::useInstructionSet(construction::InstructionSet::kBaseline));
+  std::vector<std::vector<double>> baseline;
+  for (const SampleGrid& g : grids)
+    baseline.push_back(evaluator.evaluate(g));
+  int compared = 0;
+  for (auto set : {construction::InstructionSet::kAvx2, construction::InstructionSet::kAvx512}) {
+    if (!construction::useInstructionSet(set))
+      continue; // this CPU lacks it
+    for (std::size_t i = 0; i < grids.size(); ++i) {
+      const std::vector<double> heights = evaluator.evaluate(grids[i]);
+      ASSERT_EQ(heights.size(), baseline[i].size());
+      ASSERT_EQ(std::memcmp(heights.data(), baseline[i].data(), heights.size() * sizeof(double)), 0)
+          << "grid " << i << " differs on instruction set " << static_cast<int>(set);
+      ++compared;
+    }
+  }
+  if (compared == 0)
+    GTEST_SKIP() << "this CPU has neither AVX2 nor AVX-512";
+}
+
 } // namespace
 } // namespace strahler::tiling

@@ -29,6 +29,9 @@ struct NoiseOctaves {
 /// A world ready to evaluate: the data plus the indexes that make h(p) local.
 /// h = C(B(T…), U(R…)) (Section 6) on land, shaped by CoastShape at the shore and below
 /// the sea. Evaluation is a pure, thread-safe function of (world, point, sample spacing).
+/// The terrain blend B(T…) = Σ w_i c_i / Σ w_i + A · fBm_G(p), where the noise amplitude A and
+/// gain G are the w-weighted means of the primitives' amplitude and roughness: one shared
+/// noise whose character follows the primitives (see docs/architecture.md).
 class World {
 public:
   /// Indexes `data` (which must be consistent, as the generator and the store make it).
@@ -36,6 +39,8 @@ public:
 
   /// The vector description.
   const WorldData& data() const noexcept { return data_; }
+  /// Bounding box of river primitive i's support.
+  const geometry::Aabb& riverSupport(std::uint32_t i) const noexcept { return riverSupport_[i]; }
   /// The land with fast point and distance queries.
   const geometry::PolygonIndex& land() const noexcept { return land_; }
 
@@ -72,20 +77,31 @@ public:
                           std::span<const std::uint32_t> rivers,
                           Coast coast = Coast::kUnknown) const noexcept;
 
-private:
-  /// Sums of the terrain blend at p over the candidates: weights, weighted elevations, and
-  /// the amplitude of each of the first kActive noise octaves.
-  struct Blend {
-    double weight = 0.0;
-    double weightedHeight = 0.0;
-    int count = 0;
-    std::array<double, NoiseOctaves::kOctaves> octaveAmplitude{};
+  /// Heights at many points sharing one spacing and one candidate set (as evaluateFrom() asks
+  /// of each point), base::kLanes at a time with vector instructions: heights[i] equals
+  /// height(points[i], spacing) bit for bit. `heights` has points.size() elements.
+  void heightsFrom(std::span<const geometry::Vec2> points, double spacing,
+                   std::span<const std::uint32_t> terrain, std::span<const std::uint32_t> rivers,
+                   Coast coast, std::span<double> heights) const noexcept;
+
+  /// The fields of a terrain primitive the blend reads, packed (one cache line each).
+  struct HotTerrain {
+    geometry::Vec2 center;
+    double radius2 = 0.0;   ///< r²
+    double elevation = 0.0; ///< c_z
+    double amplitude = 0.0; ///< ≥ 0
+    double roughness = 0.0; ///< fBm gain in [0, kMaxRoughness]
   };
-  template <int kActive>
-  Blend blend(geometry::Vec2 p, std::span<const std::uint32_t> ids) const noexcept;
-  Sample terrainAt(geometry::Vec2 p, double spacing,
-                   std::span<const std::uint32_t> ids) const noexcept;
-  Sample riversAt(geometry::Vec2 p, std::span<const std::uint32_t> ids) const noexcept;
+  /// Largest fBm gain evaluated (keeps octave amplitudes decreasing).
+  static constexpr double kMaxRoughness = 0.95;
+
+private:
+  /// Terrain blends B(T…) at base::kLanes points (xs, ys) into h, w (see terrainAt in world.cpp).
+  void terrainLanes(const double* xs, const double* ys, double spacing,
+                    std::span<const std::uint32_t> ids, double* h, double* w) const noexcept;
+  /// U(R…) at base::kLanes points (xs, ys) into out[0 .. kLanes).
+  void riversLanes(const double* xs, const double* ys, std::span<const std::uint32_t> ids,
+                   Sample* out) const noexcept;
   double shapeCoast(geometry::Vec2 p, const Sample& terrain, const Sample& rivers,
                     Coast coast) const noexcept;
 
@@ -97,19 +113,21 @@ private:
   // Per river primitive: the box of each run of 8 curve segments, so the closest-point search
   // skips whole runs far from p instead of testing every segment's box.
   std::vector<std::vector<geometry::Aabb>> riverChunks_;
-  // The fields terrainAt reads, per terrain primitive, packed together so the candidate
-  // loop touches one cache line per primitive instead of the whole TerrainPrimitive.
-  struct HotTerrain {
-    geometry::Vec2 center;
-    double radius2 = 0.0; // radius²
-    double elevation = 0.0;
-    double noiseScale = 0.0; // amplitude / Σ_k g^k, 0 without noise
-  };
-  std::vector<HotTerrain> hot_;
-  // Per terrain primitive: noiseScale · g^k, the amplitude of octave k per unit weight.
-  std::vector<std::array<double, NoiseOctaves::kOctaves>> octaveGains_;
+  std::vector<HotTerrain> hot_; // per terrain primitive
   noise::GradientNoise noise_;
 };
+
+/// Vector instruction sets the evaluator can run on; every one gives the same bits.
+enum class InstructionSet {
+  kBaseline, ///< SSE2, every x86-64.
+  kAvx2,     ///< 256-bit vectors.
+  kAvx512,   ///< 512-bit vectors (AVX-512F).
+};
+/// The set evaluation uses: the widest this CPU has, unless useInstructionSet() chose another.
+InstructionSet instructionSet() noexcept;
+/// Evaluates with `set` from now on, process-wide, if this CPU has it (for tests and
+/// benchmarks); returns whether it does.
+bool useInstructionSet(InstructionSet set) noexcept;
 
 /// Fade of a noise octave of wavelength `wavelength` at sample spacing `spacing`: 0 below
 /// twice the spacing, 1 from four times, linear between.

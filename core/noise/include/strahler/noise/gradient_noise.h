@@ -1,5 +1,6 @@
 #pragma once
 
+#include "strahler/base/lanes.h"
 #include "strahler/geometry/vec2.h"
 
 #include <array>
@@ -7,9 +8,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace strahler::noise {
 namespace detail {
@@ -71,66 +71,63 @@ public:
     return a + v * (b - a);
   }
 
-  /// Noise at two points (xs[i], ys[i]) into out[0], out[1]: each lane does the operations
-  /// of at() in the same order (floor by truncation then correction, exact for |v| < 2^31;
-  /// other inputs take at()), so results equal at()'s up to the sign of a zero.
-  void at2(const double* xs, const double* ys, double* out) const noexcept {
-#if defined(__SSE2__)
-    const __m128d px = _mm_loadu_pd(xs), py = _mm_loadu_pd(ys);
-    const __m128d limit = _mm_set1_pd(2147483647.0);
-    const __m128d magnitude = _mm_set1_pd(-0.0);
-    // Not-less-than is also true for NaN, which at() handles.
-    const __m128d big = _mm_or_pd(_mm_cmpnlt_pd(_mm_andnot_pd(magnitude, px), limit),
-                                  _mm_cmpnlt_pd(_mm_andnot_pd(magnitude, py), limit));
-    if (_mm_movemask_pd(big) != 0) {
-      out[0] = at({xs[0], ys[0]});
-      out[1] = at({xs[1], ys[1]});
-      return;
-    }
-    const __m128d one = _mm_set1_pd(1.0);
-    const __m128d tx = _mm_cvtepi32_pd(_mm_cvttpd_epi32(px));
-    const __m128d ty = _mm_cvtepi32_pd(_mm_cvttpd_epi32(py));
-    const __m128d fx = _mm_sub_pd(tx, _mm_and_pd(_mm_cmpgt_pd(tx, px), one));
-    const __m128d fy = _mm_sub_pd(ty, _mm_and_pd(_mm_cmpgt_pd(ty, py), one));
-    const __m128i ixs = _mm_cvttpd_epi32(fx), iys = _mm_cvttpd_epi32(fy);
-    alignas(16) std::int32_t ix[4], iy[4];
-    _mm_store_si128(reinterpret_cast<__m128i*>(ix), ixs);
-    _mm_store_si128(reinterpret_cast<__m128i*>(iy), iys);
-    const double* g[4][2]; // [corner 00, 10, 01, 11][lane]
-    for (int l = 0; l < 2; ++l) {
+  /// Largest |coordinate| atLanes() accepts.
+  static constexpr double kLaneLimit = 2147483647.0;
+
+  /// Noise at base::kLanes points (x[l], y[l]), each lane with the operations of at() in the
+  /// same order (floor by truncation then correction), so lanes equal at() up to the sign of a
+  /// zero. Requires |x|, |y| < kLaneLimit in every lane. When all lanes share one lattice cell
+  /// (long wavelengths), the cell's gradients are looked up once.
+  [[gnu::always_inline]] base::Doubles atLanes(base::Doubles px, base::Doubles py) const noexcept {
+    using base::Doubles;
+    using base::Int32s;
+    using base::kLanes;
+    const Doubles tx = __builtin_convertvector(__builtin_convertvector(px, Int32s), Doubles);
+    const Doubles ty = __builtin_convertvector(__builtin_convertvector(py, Int32s), Doubles);
+    const Doubles fx = tx > px ? tx - 1.0 : tx;
+    const Doubles fy = ty > py ? ty - 1.0 : ty;
+    const Int32s ix = __builtin_convertvector(fx, Int32s);
+    const Int32s iy = __builtin_convertvector(fy, Int32s);
+    alignas(64) double gx[4][kLanes], gy[4][kLanes]; // [corner 00, 10, 01, 11][lane]
+    auto lookUp = [&](int l, int to) {
       const auto cx = static_cast<std::size_t>(ix[l] & 255);
       const auto cy = static_cast<std::size_t>(iy[l] & 255);
       const std::size_t r0 = perm_[cx], r1 = perm_[(cx + 1) & 255];
       const std::size_t cy1 = (cy + 1) & 255;
-      g[0][l] = detail::kGradients[perm_[r0 + cy] & 15];
-      g[1][l] = detail::kGradients[perm_[r1 + cy] & 15];
-      g[2][l] = detail::kGradients[perm_[r0 + cy1] & 15];
-      g[3][l] = detail::kGradients[perm_[r1 + cy1] & 15];
+      const std::size_t corner[4] = {perm_[r0 + cy], perm_[r1 + cy], perm_[r0 + cy1],
+                                     perm_[r1 + cy1]};
+      for (int c = 0; c < 4; ++c) {
+        const double* g = detail::kGradients[corner[c] & 15];
+        for (int t = l; t < to; ++t) {
+          gx[c][t] = g[0];
+          gy[c][t] = g[1];
+        }
+      }
+    };
+    bool oneCell = true;
+    for (int l = 1; l < kLanes; ++l)
+      oneCell = oneCell && ix[l] == ix[0] && iy[l] == iy[0];
+    if (oneCell)
+      lookUp(0, kLanes);
+    else
+      for (int l = 0; l < kLanes; ++l)
+        lookUp(l, l + 1);
+    Doubles g[4][2];
+    for (int c = 0; c < 4; ++c) {
+      __builtin_memcpy(&g[c][0], gx[c], sizeof(Doubles));
+      __builtin_memcpy(&g[c][1], gy[c], sizeof(Doubles));
     }
-    const __m128d x = _mm_sub_pd(px, fx), y = _mm_sub_pd(py, fy);
-    const __m128d x1 = _mm_sub_pd(x, one), y1 = _mm_sub_pd(y, one);
-    auto dotg = [&](int c, __m128d dx, __m128d dy) {
-      const __m128d gx = _mm_set_pd(g[c][1][0], g[c][0][0]);
-      const __m128d gy = _mm_set_pd(g[c][1][1], g[c][0][1]);
-      return _mm_add_pd(_mm_mul_pd(gx, dx), _mm_mul_pd(gy, dy));
-    };
-    const __m128d n00 = dotg(0, x, y), n10 = dotg(1, x1, y);
-    const __m128d n01 = dotg(2, x, y1), n11 = dotg(3, x1, y1);
-    auto fade = [](__m128d t) {
-      // t * t * t * (t * (t * 6 - 15) + 10), in that order.
-      const __m128d inner =
-          _mm_add_pd(_mm_mul_pd(t, _mm_sub_pd(_mm_mul_pd(t, _mm_set1_pd(6.0)), _mm_set1_pd(15.0))),
-                     _mm_set1_pd(10.0));
-      return _mm_mul_pd(_mm_mul_pd(_mm_mul_pd(t, t), t), inner);
-    };
-    const __m128d u = fade(x), v = fade(y);
-    const __m128d a = _mm_add_pd(n00, _mm_mul_pd(u, _mm_sub_pd(n10, n00)));
-    const __m128d b = _mm_add_pd(n01, _mm_mul_pd(u, _mm_sub_pd(n11, n01)));
-    _mm_storeu_pd(out, _mm_add_pd(a, _mm_mul_pd(v, _mm_sub_pd(b, a))));
-#else
-    out[0] = at({xs[0], ys[0]});
-    out[1] = at({xs[1], ys[1]});
-#endif
+    const Doubles x = px - fx, y = py - fy;
+    const Doubles x1 = x - 1.0, y1 = y - 1.0;
+    const Doubles n00 = g[0][0] * x + g[0][1] * y;
+    const Doubles n10 = g[1][0] * x1 + g[1][1] * y;
+    const Doubles n01 = g[2][0] * x + g[2][1] * y1;
+    const Doubles n11 = g[3][0] * x1 + g[3][1] * y1;
+    auto fade = [](Doubles t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); };
+    const Doubles u = fade(x), v = fade(y);
+    const Doubles a = n00 + u * (n10 - n00);
+    const Doubles b = n01 + u * (n11 - n01);
+    return a + v * (b - a);
   }
 
   /// Fractal sum of `octaves` octaves: Σ gain^i · at(p · lacunarity^i), normalised so the
@@ -143,3 +140,5 @@ private:
 };
 
 } // namespace strahler::noise
+
+#pragma GCC diagnostic pop

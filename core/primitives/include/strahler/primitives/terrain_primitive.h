@@ -6,8 +6,9 @@ namespace strahler::primitives {
 
 /// Terrain primitive T (Section 6.1): a disc of influence with a base elevation and noise.
 /// h(p) = elevation + amplitude · n(p), w(p) = (1 − d²/r²)² for d < r, else 0, where n is
-/// the world's shared fBm noise with gain `roughness` (shared, so that blending many
-/// primitives keeps the noise coherent instead of averaging it away).
+/// the world's shared fBm noise with gain `roughness`. Blending many primitives blends their
+/// elevations and their noise parameters (amplitude, roughness) and adds one shared noise, so
+/// the noise stays coherent instead of averaging away (construction::World).
 struct TerrainPrimitive {
   geometry::Vec2 center;  ///< c, local metres.
   double radius = 0.0;    ///< r, metres.

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <cstdint>
+
+// Fixed-width vectors of doubles for evaluating several samples at once (GCC vector
+// extensions). Every lane performs the IEEE operations written, in the order written; the
+// compiler maps them to SSE2, AVX2 or AVX-512 instructions without changing a result
+// (no FMA contraction, see cmake/StrahlerTarget.cmake), so lane results equal scalar ones.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+namespace strahler::base {
+
+/// Number of samples evaluated together.
+inline constexpr int kLanes = 8;
+/// kLanes doubles.
+using Doubles = double __attribute__((vector_size(8 * kLanes)));
+/// kLanes lane masks (all bits set where a comparison holds), as comparisons of Doubles give.
+using LaneMask = std::int64_t __attribute__((vector_size(8 * kLanes)));
+/// kLanes 32-bit integers.
+using Int32s = std::int32_t __attribute__((vector_size(4 * kLanes)));
+
+/// Whether any lane of `m` is set.
+[[gnu::always_inline]] inline bool anyLane(LaneMask m) noexcept {
+  std::int64_t any = 0;
+  for (int l = 0; l < kLanes; ++l)
+    any |= m[l];
+  return any != 0;
+}
+
+/// All lanes equal to v.
+[[gnu::always_inline]] inline Doubles splat(double v) noexcept {
+  return Doubles{} + v;
+}
+
+} // namespace strahler::base
+
+#pragma GCC diagnostic pop
