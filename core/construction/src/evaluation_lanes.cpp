@@ -23,8 +23,8 @@ using base::splat;
 /// Below this amplitude (m) an octave is left out.
 constexpr double kNegligibleAmplitude = 1e-3;
 /// Coordinates below this magnitude keep every octave's lattice coordinate within
-/// GradientNoise::kLaneLimit (octave offsets add < 500 lattice units).
-constexpr double kLaneSafe = 2.0e9;
+/// LatticeNoise::kLaneLimit (octave offsets add < 500 lattice units).
+constexpr double kLaneSafe = noise::LatticeNoise::kLaneLimit - 1000.0;
 
 Doubles load(const double* v) noexcept {
   Doubles d;
@@ -37,7 +37,7 @@ void store(double* to, Doubles d) noexcept {
 }
 
 /// The noise at every lane: atLanes(), or at() per lane where a lane is out of its range.
-[[gnu::always_inline]] inline Doubles noiseAt(const noise::GradientNoise& noise, Doubles x,
+[[gnu::always_inline]] inline Doubles noiseAt(const noise::LatticeNoise& noise, Doubles x,
                                               Doubles y, bool lanesSafe) noexcept {
   if (lanesSafe)
     return noise.atLanes(x, y);
@@ -59,8 +59,8 @@ void store(double* to, Doubles d) noexcept {
     const Doubles dx = px - t.center.x, dy = py - t.center.y;
     const Doubles d2 = dx * dx + dy * dy;
     const LaneMask inside = d2 < t.radius2;
-    const Doubles u = 1.0 - d2 / t.radius2;
-    const Doubles w = inside ? u * u : Doubles{}; // primitives::falloff
+    const Doubles u = 1.0 - d2 * t.inverseRadius2;
+    const Doubles w = inside ? u * u : Doubles{}; // primitives::falloff, by a reciprocal
     weight += w;
     weightedHeight += w * t.elevation;
     weightedAmplitude += w * t.amplitude;

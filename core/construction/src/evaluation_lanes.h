@@ -22,7 +22,7 @@ struct TerrainLaneArgs {
   const World::HotTerrain* hot = nullptr;
   std::span<const std::uint32_t> ids;
   const OctaveFades* fades = nullptr;
-  const noise::GradientNoise* noise = nullptr;
+  const noise::LatticeNoise* noise = nullptr;
   const double* xs = nullptr;
   const double* ys = nullptr;
   double* h = nullptr;

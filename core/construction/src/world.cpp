@@ -50,8 +50,9 @@ World::World(WorldData data)
   hot_.reserve(data_.terrain.size());
   for (std::uint32_t i = 0; i < data_.terrain.size(); ++i) {
     const primitives::TerrainPrimitive& t = data_.terrain[i];
-    hot_.push_back({t.center, t.radius * t.radius, t.elevation, std::max(t.amplitude, 0.0),
-                    std::clamp(t.roughness, 0.0, kMaxRoughness)});
+    const double radius2 = t.radius * t.radius;
+    hot_.push_back({t.center, radius2, radius2 > 0.0 ? 1.0 / radius2 : 0.0, t.elevation,
+                    std::max(t.amplitude, 0.0), std::clamp(t.roughness, 0.0, kMaxRoughness)});
     terrainGrid_.insert(geometry::Aabb{t.center, t.center}.expanded(t.radius), i);
   }
   for (std::uint32_t i = 0; i < data_.rivers.size(); ++i) {
@@ -168,6 +169,28 @@ World::Evaluation World::evaluateFrom(Vec2 p, double spacing,
   e.tree = replace(e.terrain, e.rivers).h;
   e.height = coast == Coast::kInland ? e.tree : shapeCoast(p, e.terrain, e.rivers, coast);
   return e;
+}
+
+void World::heights(std::span<const Vec2> points, double spacing,
+                    std::span<double> out) const noexcept {
+  constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
+  for (std::size_t begin = 0; begin < points.size(); begin += kLanes) {
+    const std::span<const Vec2> group =
+        points.subspan(begin, std::min(kLanes, points.size() - begin));
+    const std::span<const std::uint32_t> terrain = terrainGrid_.cellAt(group[0]);
+    const std::span<const std::uint32_t> rivers = riverGrid_.cellAt(group[0]);
+    const bool shared = std::all_of(group.begin(), group.end(), [&](Vec2 p) {
+      return terrainGrid_.cellAt(p).data() == terrain.data() &&
+             riverGrid_.cellAt(p).data() == rivers.data();
+    });
+    if (shared) {
+      heightsFrom(group, spacing, terrain, rivers, Coast::kUnknown,
+                  out.subspan(begin, group.size()));
+      continue;
+    }
+    for (std::size_t l = 0; l < group.size(); ++l)
+      out[begin + l] = height(group[l], spacing);
+  }
 }
 
 void World::heightsFrom(std::span<const Vec2> points, double spacing,

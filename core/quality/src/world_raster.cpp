@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <thread>
+#include <vector>
 
 namespace strahler::quality {
 namespace {
@@ -19,14 +20,20 @@ CellClass classify(const construction::World& world, Vec2 p) {
 }
 
 void sampleRows(const construction::World& world, HeightRaster& r, int first, int step) {
-  for (int y = first; y < r.height; y += step)
+  std::vector<Vec2> points(static_cast<std::size_t>(r.width));
+  std::vector<double> heights(points.size());
+  for (int y = first; y < r.height; y += step) {
+    for (int x = 0; x < r.width; ++x)
+      points[static_cast<std::size_t>(x)] = r.origin + Vec2{x * r.cellSize, y * r.cellSize};
+    world.heights(points, r.cellSize, heights);
     for (int x = 0; x < r.width; ++x) {
-      const Vec2 p = r.origin + Vec2{x * r.cellSize, y * r.cellSize};
       const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(r.width) +
                             static_cast<std::size_t>(x);
-      r.heights[i] = static_cast<float>(world.height(p, r.cellSize));
-      r.cellClass[i] = static_cast<std::uint8_t>(classify(world, p));
+      r.heights[i] = static_cast<float>(heights[static_cast<std::size_t>(x)]);
+      r.cellClass[i] =
+          static_cast<std::uint8_t>(classify(world, points[static_cast<std::size_t>(x)]));
     }
+  }
 }
 
 void burnRivers(const construction::World& world, HeightRaster& r) {

@@ -53,10 +53,13 @@ image::RgbImage drawReliefImage(const construction::World& world, int longSide, 
     return z[static_cast<std::size_t>(y + 1) * (w + 2) + (x + 1)];
   };
   auto rows = [&](int first, int step) {
-    for (int y = first - 1; y <= hgt; y += step)
+    std::vector<Vec2> points(static_cast<std::size_t>(w + 2));
+    for (int y = first - 1; y <= hgt; y += step) {
       for (int x = -1; x <= w; ++x)
-        at(x, y) =
-            world.height({view.min.x + (x + 0.5) * pixel, view.max.y - (y + 0.5) * pixel}, pixel);
+        points[static_cast<std::size_t>(x + 1)] = {view.min.x + (x + 0.5) * pixel,
+                                                   view.max.y - (y + 0.5) * pixel};
+      world.heights(points, pixel, {&at(-1, y), points.size()});
+    }
   };
   std::vector<std::thread> pool;
   const int n = std::max(1, threads);

@@ -168,6 +168,9 @@ double distanceToBox(Vec2 p, const Aabb& b) {
   return std::hypot(dx, dy);
 }
 
+/// A bin with more terrain candidates than this is evaluated point by point.
+constexpr std::size_t kDenseBin = 1024;
+
 /// Bins of about kBinSide metres (below the scale of a terrain primitive, so most candidates
 /// of a bin do cover its samples) and never narrower than one run of base::kLanes samples
 /// or shorter than one row.
@@ -256,6 +259,13 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
       const std::size_t n =
           std::min(static_cast<std::size_t>(base::kLanes), width - static_cast<std::size_t>(col));
       const std::size_t bin = bins.binOf(row, col);
+      if (bins.terrain(bin).size() > kDenseBin) {
+        // Samples kilometres apart (low zooms): each point's own cell of the world's index
+        // holds far fewer candidates than the bin.
+        for (std::size_t l = 0; l < n; ++l)
+          heights[k + l] = world_.height(grid.points[k + l], spacing);
+        continue;
+      }
       world_.heightsFrom({grid.points.data() + k, n}, spacing, bins.terrain(bin), bins.rivers(bin),
                          coast[bin], {heights.data() + k, n});
     }

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 
@@ -33,7 +34,7 @@ const World& defaultWorld() {
 /// B(T…) at p written out plainly from its definition (world.h), every primitive visited:
 /// the reference for the vectorised evaluator.
 Sample referenceTerrain(const World& world, Vec2 p, double spacing) {
-  const noise::GradientNoise noise(world.data().params.seed ^ 0x746572726e6full);
+  const noise::LatticeNoise noise(world.data().params.seed ^ 0x746572726e6full);
   double weight = 0.0, weightedHeight = 0.0, amplitude = 0.0, roughness = 0.0;
   int count = 0;
   for (const primitives::TerrainPrimitive& t : world.data().terrain) {
@@ -115,6 +116,21 @@ TEST(World, EvaluationMatchesThePlainDefinition) {
     onRivers += rivers.w > 0.0;
   }
   EXPECT_GT(onRivers, 150);
+}
+
+TEST(World, BatchedHeightsEqualSingleHeights) {
+  const World& world = defaultWorld();
+  const geometry::Aabb box = world.land().bounds();
+  std::vector<Vec2> points;
+  for (int i = 0; i < 1000; ++i) // rows of neighbours, crossing index cells now and then
+    points.push_back(box.min +
+                     Vec2{box.size().x * 0.3 + 7.3 * i, box.size().y * (0.2 + i / 2000.0)});
+  std::vector<double> batched(points.size());
+  world.heights(points, 3.0, batched);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double single = world.height(points[i], 3.0);
+    ASSERT_EQ(std::memcmp(&batched[i], &single, sizeof single), 0) << "point " << i;
+  }
 }
 
 TEST(World, RiversNeverRiseDownstream) {

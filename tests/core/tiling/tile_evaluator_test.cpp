@@ -64,6 +64,26 @@ TEST(TileEvaluator, RestrictedEvaluationEqualsTheWholeWorld) {
   EXPECT_GT(compared, 10000u);
 }
 
+TEST(TileEvaluator, LowZoomTilesEqualTheWholeWorld) {
+  // Samples kilometres apart: the island falls in a few bins holding every primitive.
+  const construction::World& world = islandWorld();
+  const TileEvaluator evaluator(world);
+  const Vec2 c = world.data().projectionCenter;
+  for (int z : {0, 3, 6}) {
+    const SampleGrid grid = webScheme().rasterGrid(webTileAt(c.x, c.y, z), 256);
+    const std::vector<double> fast = evaluator.evaluate(grid);
+    int land = 0;
+    for (std::size_t k = 0; k < grid.points.size(); ++k) {
+      const double slow = world.height(grid.points[k], grid.rowSpacing[k / grid.width]);
+      ASSERT_EQ(std::memcmp(&fast[k], &slow, sizeof slow), 0) << "zoom " << z << " sample " << k;
+      land += slow > 0.0;
+    }
+    if (z > 0) { // at zoom 0 samples are 150 km apart and may all miss the island
+      EXPECT_GT(land, 0) << "zoom " << z;
+    }
+  }
+}
+
 TEST(TileEvaluator, SmallTilesGatherFewPrimitives) {
   const TileEvaluator evaluator(islandWorld());
   const TileScheme s = localScheme();

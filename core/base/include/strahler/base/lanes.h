@@ -20,12 +20,13 @@ using LaneMask = std::int64_t __attribute__((vector_size(8 * kLanes)));
 /// kLanes 32-bit integers.
 using Int32s = std::int32_t __attribute__((vector_size(4 * kLanes)));
 
-/// Whether any lane of `m` is set.
+/// Whether any lane of `m` is set (an OR across lanes by shuffles, kept in registers).
 [[gnu::always_inline]] inline bool anyLane(LaneMask m) noexcept {
-  std::int64_t any = 0;
-  for (int l = 0; l < kLanes; ++l)
-    any |= m[l];
-  return any != 0;
+  static_assert(kLanes == 8);
+  m |= __builtin_shuffle(m, LaneMask{4, 5, 6, 7, 0, 1, 2, 3});
+  m |= __builtin_shuffle(m, LaneMask{2, 3, 0, 1, 6, 7, 4, 5});
+  m |= __builtin_shuffle(m, LaneMask{1, 0, 3, 2, 5, 4, 7, 6});
+  return m[0] != 0;
 }
 
 /// All lanes equal to v.

@@ -4,7 +4,7 @@
 #include "strahler/construction/world_data.h"
 #include "strahler/geometry/grid_index.h"
 #include "strahler/geometry/polygon_index.h"
-#include "strahler/noise/gradient_noise.h"
+#include "strahler/noise/lattice_noise.h"
 
 #include <array>
 #include <cstdint>
@@ -57,6 +57,10 @@ public:
   double height(geometry::Vec2 p, double spacing) const noexcept {
     return evaluate(p, spacing).height;
   }
+  /// height(points[i], spacing) into heights[i] for every i, base::kLanes neighbouring points
+  /// at a time where they share their cell of the world's index (rows of a raster).
+  void heights(std::span<const geometry::Vec2> points, double spacing,
+               std::span<double> heights) const noexcept;
   /// The full evaluation at p (see height()).
   Evaluation evaluate(geometry::Vec2 p, double spacing) const noexcept;
 
@@ -87,10 +91,11 @@ public:
   /// The fields of a terrain primitive the blend reads, packed (one cache line each).
   struct HotTerrain {
     geometry::Vec2 center;
-    double radius2 = 0.0;   ///< r²
-    double elevation = 0.0; ///< c_z
-    double amplitude = 0.0; ///< ≥ 0
-    double roughness = 0.0; ///< fBm gain in [0, kMaxRoughness]
+    double radius2 = 0.0;        ///< r²
+    double inverseRadius2 = 0.0; ///< 1 / r² (0 for r = 0)
+    double elevation = 0.0;      ///< c_z
+    double amplitude = 0.0;      ///< ≥ 0
+    double roughness = 0.0;      ///< fBm gain in [0, kMaxRoughness]
   };
   /// Largest fBm gain evaluated (keeps octave amplitudes decreasing).
   static constexpr double kMaxRoughness = 0.95;
@@ -114,7 +119,7 @@ private:
   // skips whole runs far from p instead of testing every segment's box.
   std::vector<std::vector<geometry::Aabb>> riverChunks_;
   std::vector<HotTerrain> hot_; // per terrain primitive
-  noise::GradientNoise noise_;
+  noise::LatticeNoise noise_;
 };
 
 /// Vector instruction sets the evaluator can run on; every one gives the same bits.
