@@ -171,19 +171,21 @@ double distanceToBox(Vec2 p, const Aabb& b) {
 /// A bin with more terrain candidates than this is evaluated point by point.
 constexpr std::size_t kDenseBin = 1024;
 
-/// Bins of about kBinSide metres (below the scale of a terrain primitive, so most candidates
-/// of a bin do cover its samples) and never narrower than one run of base::kLanes samples
-/// or shorter than one row.
+/// Bins about square, of at least kBinSide metres (below the scale of a terrain primitive,
+/// so most candidates of a bin do cover its samples) and never narrower than one run of
+/// base::kLanes samples: (runs of a row, rows) per bin.
 constexpr double kBinSide = 60.0;
 std::pair<int, int> binShape(const SampleGrid& grid) {
   const Vec2 size = grid.bounds.size();
-  const double dx = size.x / std::max(grid.width - 1, 1);
-  const double dy = size.y / std::max(grid.height - 1, 1);
+  const double dx = std::max(size.x / std::max(grid.width - 1, 1), 1e-9);
+  const double dy = std::max(size.y / std::max(grid.height - 1, 1), 1e-9);
   const int runs = (grid.width + base::kLanes - 1) / base::kLanes;
-  const double groups = std::round(kBinSide / std::max(dx * base::kLanes, 1e-9));
-  const double rows = std::round(kBinSide / std::max(dy, 1e-9));
-  return {static_cast<int>(std::clamp(groups, 1.0, static_cast<double>(std::max(runs, 1)))),
-          static_cast<int>(std::clamp(rows, 4.0, static_cast<double>(std::max(grid.height, 1))))};
+  const double groups = std::clamp(std::round(kBinSide / (dx * base::kLanes)), 1.0,
+                                   static_cast<double>(std::max(runs, 1)));
+  const double width = groups * base::kLanes * dx;
+  const double rows = std::clamp(std::round(std::max(kBinSide, width) / dy), 1.0,
+                                 static_cast<double>(std::max(grid.height, 1)));
+  return {static_cast<int>(groups), static_cast<int>(rows)};
 }
 
 } // namespace
@@ -238,10 +240,20 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
           [&](const Aabb& box) { return distanceToBox2(t.center, box) <= reach2; },
           [&](std::size_t bin) { bins.addTerrain(bin, i); });
     }
-    for (std::uint32_t i = r.riverBegin; i < r.riverEnd; ++i)
+    for (std::uint32_t i = r.riverBegin; i < r.riverEnd; ++i) {
+      // A bin no run of the curve comes within the radius of gets w = 0 from this river (the
+      // margin keeps rounding on the side of extra, harmless, candidates).
+      const double radius = data.rivers[i].radius * (1.0 + 1e-9) + 1e-6;
+      const std::span<const Aabb> chunks = world_.riverChunks(i);
       bins.forEachBin(
-          world_.riverSupport(i), [](const Aabb&) { return true; },
+          world_.riverSupport(i),
+          [&](const Aabb& box) {
+            const Aabb near = box.expanded(radius);
+            return std::any_of(chunks.begin(), chunks.end(),
+                               [&](const Aabb& c) { return c.intersects(near); });
+          },
           [&](std::size_t bin) { bins.addRiver(bin, i); });
+    }
   }
   bins.finish();
   std::vector<construction::World::Coast> coast(bins.count());
