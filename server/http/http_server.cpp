@@ -13,7 +13,6 @@
 #include <cstdio>
 #include <exception>
 #include <mutex>
-#include <optional>
 #include <thread>
 #include <vector>
 
@@ -88,7 +87,7 @@ struct Server::Impl {
   bool stopped = false;
   std::shared_ptr<detail::ServerState> state;
   std::shared_ptr<detail::Listener> listener;
-  std::optional<net::executor_work_guard<net::io_context::executor_type>> work;
+  std::vector<net::executor_work_guard<net::io_context::executor_type>> work;
   std::vector<std::thread> threads;
   std::atomic<std::uint16_t> port{0};
   std::atomic<const detail::ServerState*> published{nullptr}; ///< For connections().
@@ -116,18 +115,20 @@ base::Status Server::start() {
     return base::makeError(base::ErrorCode::kInternal, "Server::start() called twice");
   STRAHLER_RETURN_IF_ERROR(validate(impl.options));
   auto state = std::make_shared<detail::ServerState>(impl.options, impl.handler, impl.observer);
-  STRAHLER_ASSIGN_OR_RETURN(const tcp::endpoint endpoint,
-                            resolve(state->ioContext(), impl.options.host, impl.options.port));
+  STRAHLER_ASSIGN_OR_RETURN(
+      const tcp::endpoint endpoint,
+      resolve(*state->ioContexts().front(), impl.options.host, impl.options.port));
   auto listener = std::make_shared<detail::Listener>(state);
   STRAHLER_RETURN_IF_ERROR(listener->open(endpoint));
   impl.state = std::move(state);
   impl.listener = std::move(listener);
   impl.published.store(impl.state.get());
   impl.port.store(impl.listener->port());
-  impl.work.emplace(net::make_work_guard(impl.state->ioContext()));
+  for (const auto& io : impl.state->ioContexts())
+    impl.work.push_back(net::make_work_guard(*io));
   impl.listener->run();
-  for (int i = 0; i < impl.options.ioThreads; ++i)
-    impl.threads.emplace_back([&io = impl.state->ioContext()] { runEventLoop(io); });
+  for (const auto& io : impl.state->ioContexts())
+    impl.threads.emplace_back([&loop = *io] { runEventLoop(loop); });
   impl.started = true;
   return base::Ok{};
 }
@@ -170,8 +171,9 @@ void Server::Impl::closeConnections(Clock::time_point deadline) {
 }
 
 void Server::Impl::joinThreads() {
-  work.reset();
-  state->ioContext().stop();
+  work.clear();
+  for (const auto& io : state->ioContexts())
+    io->stop();
   for (auto& thread : threads)
     thread.join();
   threads.clear();
@@ -182,12 +184,15 @@ void Server::Impl::joinThreads() {
 /// alive through a reference cycle.
 void Server::Impl::finalCleanup() {
   state->closeGate();
-  net::io_context& io = state->ioContext();
-  io.restart();
+  for (const auto& io : state->ioContexts())
+    io->restart();
   listener->closeNow();
   for (const auto& session : state->sessions())
     session->closeNow();
-  while (io.poll() > 0) {
+  for (bool ran = true; ran;) {
+    ran = false;
+    for (const auto& io : state->ioContexts())
+      ran = io->poll() > 0 || ran;
   }
 }
 

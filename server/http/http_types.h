@@ -32,6 +32,9 @@ struct Response {
   std::string body;
   /// When set, sent instead of `body` without copying (e.g. a cached tile's bytes).
   std::shared_ptr<const std::string> sharedBody;
+  /// When set, sent instead of `headers`: fields from prepareFields() of a response with this
+  /// status and body size (e.g. kept with a cached tile), so nothing is formatted per request.
+  std::shared_ptr<const std::string> preparedFields;
   std::string route = "other"; ///< Label for metrics ("tile", "tilejson", "health", ...).
   bool close = false;          ///< Close the connection after this response.
 };
@@ -40,6 +43,13 @@ struct Response {
 /// application/json, route "error", and Cache-Control: no-store when status >= 500. The message
 /// is JSON-escaped (invalid UTF-8 becomes U+FFFD), so it may quote client input.
 Response errorResponse(int status, const std::string& message);
+
+/// The header fields the server writes for `response`, serialised ("Name: value\r\n" each):
+/// the handler's (server-owned and malformed ones dropped, values trimmed), then Cache-Control
+/// on a 5xx without one, Server, Access-Control-Allow-Origin and Content-Length (not on
+/// 204/304). Date and Connection are added per request. For Response::preparedFields; valid
+/// only for responses with the same status (200..599) and body size.
+std::string prepareFields(const Response& response);
 
 /// Asynchronous request handler: call `done` exactly once, from any thread, inline or later.
 /// A handler that never calls it leaves its connection waiting (Server::stop() gives up on it

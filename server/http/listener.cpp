@@ -3,9 +3,7 @@
 #include "session.h"
 #include "wire_response.h"
 
-#include <boost/asio/strand.hpp>
 #include <boost/beast/core/bind_handler.hpp>
-#include <boost/beast/http/write.hpp>
 
 #include <cstdio>
 #include <sstream>
@@ -28,7 +26,7 @@ bool isPeerError(const ErrorCode& ec) {
 } // namespace
 
 Listener::Listener(std::shared_ptr<ServerState> state)
-    : state_(std::move(state)), acceptor_(net::make_strand(state_->ioContext())),
+    : state_(std::move(state)), acceptor_(state_->ioContexts().front()->get_executor()),
       retryTimer_(acceptor_.get_executor()) {}
 
 base::Status Listener::open(const tcp::endpoint& endpoint) {
@@ -72,11 +70,11 @@ void Listener::closeNow() noexcept {
 void Listener::doAccept() {
   if (stopped_)
     return;
-  acceptor_.async_accept(net::make_strand(state_->ioContext()),
+  acceptor_.async_accept(state_->nextIoContext(),
                          beast::bind_front_handler(&Listener::onAccept, shared_from_this()));
 }
 
-void Listener::onAccept(ErrorCode ec, tcp::socket socket) {
+void Listener::onAccept(ErrorCode ec, Socket socket) {
   if (stopped_ || ec == net::error::operation_aborted)
     return;
   if (ec)
@@ -111,21 +109,20 @@ void Listener::onAcceptError(const ErrorCode& ec) {
 }
 
 /// Writes a 503 without blocking (a fresh socket's send buffer takes it) and closes.
-void Listener::refuse(tcp::socket socket, const char* reason) noexcept {
+void Listener::refuse(Socket socket, const char* reason) noexcept {
   try {
     Response response = errorResponse(503, reason);
     response.headers.emplace_back("Retry-After", "1");
-    auto wire = toWireResponse(std::move(response), 11, false);
-    wire->keep_alive(false);
-    std::ostringstream text;
-    text << *wire;
-    const std::string bytes = text.str();
+    const WireResponse wire = toWireResponse(std::move(response), 11, false);
+    std::string bytes;
+    appendHead(bytes, wire, false, currentHttpDate());
+    bytes += *wire.body;
     ErrorCode ignored;
     socket.non_blocking(true, ignored);
     socket.write_some(net::buffer(bytes), ignored);
     socket.shutdown(tcp::socket::shutdown_both, ignored);
     socket.close(ignored);
-    state_->record("-", "-", "error", 503, bodySize(*wire), 0.0);
+    state_->record("-", "-", "error", 503, wire.bodyBytes(), 0.0);
   } catch (...) {
     // Out of memory while refusing: the socket closes with its destructor.
   }

@@ -16,8 +16,8 @@ namespace strahler::http::detail {
 inline constexpr std::chrono::milliseconds kAcceptRetryDelay{50};
 
 /// Accepts connections and starts a Session for each; beyond maxConnections, or while the server
-/// drains, a connection gets a 503 with Retry-After: 1 and is closed at once. Runs on its own
-/// strand.
+/// drains, a connection gets a 503 with Retry-After: 1 and is closed at once. Runs on the first
+/// I/O thread; connections go to the I/O threads in turn.
 class Listener : public std::enable_shared_from_this<Listener> {
 public:
   /// A listener whose sessions share `state`.
@@ -29,20 +29,20 @@ public:
   std::uint16_t port() const noexcept { return port_; }
   /// Starts the accept loop.
   void run();
-  /// Stops accepting (asynchronously, on the listener's strand).
+  /// Stops accepting (asynchronously, on the listener's thread).
   void stop();
   /// Closes the acceptor now. Only when no I/O thread runs.
   void closeNow() noexcept;
 
 private:
   void doAccept();
-  void onAccept(ErrorCode ec, tcp::socket socket);
+  void onAccept(ErrorCode ec, Socket socket);
   void onAcceptError(const ErrorCode& ec);
-  void refuse(tcp::socket socket, const char* reason) noexcept;
+  void refuse(Socket socket, const char* reason) noexcept;
 
   std::shared_ptr<ServerState> state_;
-  tcp::acceptor acceptor_;
-  net::steady_timer retryTimer_;
+  net::basic_socket_acceptor<tcp, Executor> acceptor_;
+  Timer retryTimer_;
   std::uint16_t port_ = 0;
   bool stopped_ = false;
   bool failing_ = false; ///< accept() failed last time; the failure was reported once.

@@ -1,17 +1,15 @@
 #pragma once
 
+#include <boost/asio/basic_waitable_timer.hpp>
+#include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
-#include <boost/asio/steady_timer.hpp>
 #include <boost/beast/core/error.hpp>
 #include <boost/beast/core/string.hpp>
 #include <boost/beast/http/empty_body.hpp>
 #include <boost/beast/http/message.hpp>
 #include <boost/beast/http/parser.hpp>
-#include <boost/optional.hpp>
 
-#include <cstdint>
-#include <memory>
-#include <string>
+#include <chrono>
 #include <string_view>
 
 namespace strahler::http::detail {
@@ -24,41 +22,14 @@ using ErrorCode = beast::error_code;
 
 /// The parser of one request header; requests never have a body here.
 using RequestParser = bhttp::request_parser<bhttp::empty_body>;
-/// A Beast body that sends a shared, immutable string without copying it: cached tiles go
-/// out straight from the cache. Write-only (responses).
-struct SharedStringBody {
-  using value_type = std::shared_ptr<const std::string>;
-
-  /// Body size for Content-Length.
-  static std::uint64_t size(const value_type& body) noexcept { return body ? body->size() : 0; }
-
-  /// Serialises the body as one buffer.
-  class writer {
-  public:
-    using const_buffers_type = net::const_buffer;
-
-    template <bool isRequest, class Fields>
-    writer(const bhttp::header<isRequest, Fields>&, const value_type& body) : body_(body) {}
-    void init(ErrorCode& ec) { ec = {}; }
-    boost::optional<std::pair<const_buffers_type, bool>> get(ErrorCode& ec) {
-      ec = {};
-      if (!body_ || body_->empty())
-        return boost::none;
-      return std::make_pair(const_buffers_type(body_->data(), body_->size()), false);
-    }
-
-  private:
-    const value_type& body_;
-  };
-};
-
-/// Size of a wire response's body (0 when there is none).
-template <class Message> std::size_t bodySize(const Message& m) noexcept {
-  return m.body() ? m.body()->size() : 0;
-}
-
-/// A response as written to the socket.
-using WireResponse = bhttp::response<SharedStringBody>;
+/// The executor of one I/O thread's event loop. Sockets and timers use it directly (no strand,
+/// no type-erased executor): each event loop is run by exactly one thread.
+using Executor = net::io_context::executor_type;
+/// A connection's socket, bound to its I/O thread.
+using Socket = tcp::socket::rebind_executor<Executor>::other;
+/// A timer bound to an I/O thread.
+using Timer = net::basic_waitable_timer<std::chrono::steady_clock,
+                                        net::wait_traits<std::chrono::steady_clock>, Executor>;
 
 /// A Beast (boost::) string_view as a std::string_view.
 inline std::string_view toStd(beast::string_view text) noexcept {

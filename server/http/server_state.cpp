@@ -9,8 +9,14 @@
 namespace strahler::http::detail {
 
 ServerState::ServerState(ServerOptions options, Handler handler, RequestObserver observer)
-    : options_(std::move(options)), handler_(std::move(handler)), observer_(std::move(observer)),
-      ioContext_(std::make_shared<net::io_context>(std::max(1, options_.ioThreads))) {}
+    : options_(std::move(options)), handler_(std::move(handler)), observer_(std::move(observer)) {
+  for (int i = 0; i < std::max(1, options_.ioThreads); ++i)
+    ioContexts_.push_back(std::make_unique<net::io_context>(1)); // one thread runs each
+}
+
+net::io_context& ServerState::nextIoContext() noexcept {
+  return *ioContexts_[nextIoContext_.fetch_add(1, std::memory_order_relaxed) % ioContexts_.size()];
+}
 
 void ServerState::add(const std::shared_ptr<Session>& session) {
   std::lock_guard lock(mutex_);

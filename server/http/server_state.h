@@ -22,8 +22,10 @@ namespace strahler::http::detail {
 
 class Session;
 
-/// What the listener and every session share: options, callbacks, the io_context, the registry
-/// of open connections, and the gate through which worker threads hand responses back. Sessions
+/// What the listener and every session share: options, callbacks, the event loops (one
+/// io_context per I/O thread, so that a connection's handlers run on one thread and need no
+/// strand), the registry of open connections, and the gate through which worker threads hand
+/// responses back. Sessions
 /// hold it by shared_ptr, so a `done` callback kept by a worker after Server::stop() still
 /// refers to live objects; once the gate is closed such late completions are dropped.
 class ServerState {
@@ -32,8 +34,12 @@ public:
 
   /// The options the server was started with.
   const ServerOptions& options() const noexcept { return options_; }
-  /// The event loop every socket and timer runs on.
-  net::io_context& ioContext() noexcept { return *ioContext_; }
+  /// The event loops, one per I/O thread; the first also runs the listener.
+  const std::vector<std::unique_ptr<net::io_context>>& ioContexts() const noexcept {
+    return ioContexts_;
+  }
+  /// The event loop for the next connection (round robin).
+  net::io_context& nextIoContext() noexcept;
   /// The handler for valid GET/HEAD requests.
   const Handler& handler() const noexcept { return handler_; }
 
@@ -71,7 +77,8 @@ private:
   ServerOptions options_;
   Handler handler_;
   RequestObserver observer_;
-  std::shared_ptr<net::io_context> ioContext_;
+  std::vector<std::unique_ptr<net::io_context>> ioContexts_;
+  std::atomic<std::size_t> nextIoContext_{0};
   std::atomic<std::size_t> connections_{0};
   std::atomic<bool> draining_{false};
   mutable std::mutex mutex_; ///< Guards sessions_ and gateOpen_.

@@ -4,12 +4,13 @@
 #include "wire_response.h"
 
 #include <boost/asio/dispatch.hpp>
+#include <boost/asio/write.hpp>
 #include <boost/beast/core/bind_handler.hpp>
+#include <boost/beast/core/read_size.hpp>
 #include <boost/beast/http/error.hpp>
-#include <boost/beast/http/read.hpp>
-#include <boost/beast/http/write.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cassert>
 #include <cstdio>
@@ -23,6 +24,8 @@ using Clock = std::chrono::steady_clock;
 
 /// Bytes asked for while waiting for the next keep-alive request, and per discard read.
 constexpr std::size_t kReadChunkBytes = 4096;
+/// Most bytes asked for per read while a header is incomplete (as Beast's read does).
+constexpr std::size_t kMaxHeaderReadBytes = 65536;
 /// After a closing response the server drains what the client still sends (so that the
 /// kernel does not answer it with a reset that could destroy the response), for at most this
 /// long and this many bytes.
@@ -55,9 +58,9 @@ Request makeRequest(const bhttp::request_header<>& header, bool head) {
 
 } // namespace
 
-Session::Session(std::shared_ptr<ServerState> state, tcp::socket socket)
+Session::Session(std::shared_ptr<ServerState> state, Socket socket)
     : state_(std::move(state)), options_(state_->options()), socket_(std::move(socket)),
-      executor_(socket_.get_executor()), readTimer_(executor_), writeTimer_(executor_) {}
+      executor_(socket_.get_executor()), readDeadline_(executor_), writeDeadline_(executor_) {}
 
 Session::~Session() {
   state_->remove(this);
@@ -86,8 +89,8 @@ void Session::closeNow() noexcept {
   ErrorCode ignored;
   socket_.shutdown(tcp::socket::shutdown_both, ignored);
   socket_.close(ignored);
-  cancelReadTimer();
-  cancelWriteTimer();
+  cancel(readDeadline_);
+  cancel(writeDeadline_);
   queue_.clear();
   state_->remove(this);
 }
@@ -106,11 +109,12 @@ void Session::doRead() {
   parser_->body_limit(std::numeric_limits<std::uint64_t>::max());
   if (buffer_.size() == 0 && !firstRequest_)
     return waitForRequest();
-  readHeader();
+  arm(readDeadline_, options_.headerTimeout);
+  parseBuffered();
 }
 
 void Session::waitForRequest() {
-  armReadTimer(options_.idleTimeout);
+  arm(readDeadline_, options_.idleTimeout);
   socket_.async_read_some(buffer_.prepare(kReadChunkBytes),
                           beast::bind_front_handler(&Session::onRequestStart, shared_from_this()));
 }
@@ -121,22 +125,47 @@ void Session::onRequestStart(ErrorCode ec, std::size_t bytes) {
   buffer_.commit(bytes);
   if (stopReadingIfClosing())
     return;
-  readHeader();
+  arm(readDeadline_, options_.headerTimeout);
+  parseBuffered();
 }
 
-void Session::readHeader() {
-  armReadTimer(options_.headerTimeout);
-  bhttp::async_read_header(socket_, buffer_, *parser_,
-                           beast::bind_front_handler(&Session::onHeader, shared_from_this()));
+/// Parses the buffered bytes (pipelined requests are often all there) and reads more only while
+/// the header is incomplete: the steps of Beast's async_read_header, without its round trips
+/// through the event loop.
+void Session::parseBuffered() {
+  if (buffer_.size() > 0) {
+    ErrorCode ec;
+    buffer_.consume(parser_->put(buffer_.data(), ec));
+    if (ec && ec != bhttp::error::need_more)
+      return onReadFailed(ec);
+    if (!ec && parser_->is_header_done())
+      return onHeader();
+  }
+  readMore();
 }
 
-void Session::onHeader(ErrorCode ec, std::size_t /*bytes*/) {
+void Session::readMore() {
+  const std::size_t size = beast::read_size(buffer_, kMaxHeaderReadBytes);
+  if (size == 0)
+    return onReadFailed(bhttp::error::buffer_overflow);
+  socket_.async_read_some(buffer_.prepare(size),
+                          beast::bind_front_handler(&Session::onMoreRead, shared_from_this()));
+}
+
+void Session::onMoreRead(ErrorCode ec, std::size_t bytes) {
+  buffer_.commit(bytes);
+  if (ec == net::error::eof) // what the parser's put_eof() says of an unfinished header
+    ec = parser_->got_some() ? bhttp::error::partial_message : bhttp::error::end_of_stream;
   if (ec)
     return onReadFailed(ec);
   if (stopReadingIfClosing())
     return;
+  parseBuffered();
+}
+
+void Session::onHeader() {
   reading_ = false;
-  cancelReadTimer();
+  disarm(readDeadline_);
   firstRequest_ = false;
   dispatch();
   doRead();
@@ -148,7 +177,7 @@ bool Session::stopReadingIfClosing() {
   if (!closing_)
     return false;
   reading_ = false;
-  cancelReadTimer();
+  disarm(readDeadline_);
   if (lingering_) {
     closeNow();
   } else {
@@ -159,7 +188,7 @@ bool Session::stopReadingIfClosing() {
 
 void Session::onReadFailed(const ErrorCode& ec) {
   reading_ = false;
-  cancelReadTimer();
+  disarm(readDeadline_);
   if (closed_)
     return;
   if (!lingering_ && isParseError(ec))
@@ -177,9 +206,8 @@ void Session::dispatch() {
   const auto& header = parser_->get();
   Verdict verdict = checkRequest(*parser_, options_);
   const bool head = header.method() == bhttp::verb::head;
-  const Exchange& exchange =
-      enqueue(std::string(header.method_string()), std::string(header.target()), header.version(),
-              head, header.keep_alive() && !verdict.close);
+  const Exchange& exchange = enqueue(toStd(header.method_string()), toStd(header.target()),
+                                     header.version(), head, header.keep_alive() && !verdict.close);
   if (!exchange.keepAlive)
     closing_ = true;
   if (verdict.kind == Verdict::Kind::kForward)
@@ -192,17 +220,19 @@ void Session::answerParseError(const ErrorCode& ec) {
   Verdict verdict = checkParseError(ec, *parser_, received, options_);
   const auto& header = parser_->get();
   const Exchange& exchange =
-      enqueue(std::string(header.method_string()), std::string(header.target()), 11, false, false);
+      enqueue(toStd(header.method_string()), toStd(header.target()), 11, false, false);
   closing_ = true;
   answer(exchange.sequence, std::move(verdict.response));
 }
 
-Session::Exchange& Session::enqueue(std::string method, std::string target, unsigned version,
-                                    bool head, bool keepAlive) {
+Session::Exchange& Session::enqueue(std::string_view method, std::string_view target,
+                                    unsigned version, bool head, bool keepAlive) {
   Exchange& exchange = queue_.emplace_back();
   exchange.sequence = nextSequence_++;
-  exchange.method = std::move(method);
-  exchange.target = std::move(target);
+  if (options_.accessLog) { // the only reader of method and target
+    exchange.method = method;
+    exchange.target = target;
+  }
   exchange.version = version == 10 ? 10 : 11;
   exchange.head = head;
   exchange.keepAlive = keepAlive;
@@ -217,8 +247,14 @@ void Session::callHandler(std::uint64_t sequence, const Request& request) {
   auto done = [self = shared_from_this(), sequence, called](Response response) {
     const bool again = called->exchange(true);
     assert(!again && "http::Handler called done twice");
-    if (!again)
+    if (again)
+      return;
+    // On the session's own thread (a handler answering at once) there is nothing to hand over.
+    if (self->executor_.running_in_this_thread()) {
+      self->answer(sequence, std::move(response));
+    } else {
       self->postAnswer(sequence, std::move(response));
+    }
   };
   try {
     state_->handler()(request, std::move(done));
@@ -254,7 +290,7 @@ void Session::answer(std::uint64_t sequence, Response response) {
     closing_ = true;
   }
   exchange.route = response.route;
-  exchange.message = toWireResponse(std::move(response), exchange.version, exchange.head);
+  exchange.message.emplace(toWireResponse(std::move(response), exchange.version, exchange.head));
   maybeWrite();
 }
 
@@ -266,17 +302,23 @@ void Session::maybeWrite() {
   Exchange& exchange = queue_.front();
   if (state_->draining() && queue_.size() == 1)
     exchange.keepAlive = false;
-  exchange.message->keep_alive(exchange.keepAlive);
+  const WireResponse& message = *exchange.message;
+  head_.clear();
+  appendHead(head_, message, exchange.keepAlive, currentHttpDate());
+  // One gather write of header and body; the body may be a cached tile, sent without a copy.
+  const std::array<net::const_buffer, 2> buffers = {
+      net::buffer(head_), message.body ? net::buffer(*message.body) : net::const_buffer()};
   writing_ = true;
-  armWriteTimer();
-  bhttp::async_write(socket_, *exchange.message,
-                     [self = shared_from_this(), message = exchange.message](
-                         ErrorCode ec, std::size_t /*bytes*/) { self->onWrite(ec); });
+  arm(writeDeadline_, options_.writeTimeout);
+  net::async_write(socket_, buffers,
+                   [self = shared_from_this(), body = message.body](ErrorCode ec, std::size_t) {
+                     self->onWrite(ec);
+                   });
 }
 
 void Session::onWrite(ErrorCode ec) {
   writing_ = false;
-  cancelWriteTimer();
+  disarm(writeDeadline_);
   if (closed_ || queue_.empty())
     return;
   const Exchange exchange = std::move(queue_.front());
@@ -295,9 +337,9 @@ void Session::onWrite(ErrorCode ec) {
 void Session::record(const Exchange& exchange, bool sent) noexcept {
   const double ms =
       std::chrono::duration<double, std::milli>(Clock::now() - exchange.start).count();
-  const std::size_t bytes = sent ? bodySize(*exchange.message) : 0;
-  state_->record(exchange.method, exchange.target, exchange.route, exchange.message->result_int(),
-                 bytes, ms);
+  const std::size_t bytes = sent ? exchange.message->bodyBytes() : 0;
+  state_->record(exchange.method, exchange.target, exchange.route,
+                 static_cast<int>(exchange.message->status), bytes, ms);
 }
 
 /// After the last response: shut the send side and read until the client closes, so that
@@ -307,7 +349,7 @@ void Session::linger() {
   queue_.clear(); // requests pipelined after a closing response are not answered
   ErrorCode ignored;
   socket_.shutdown(tcp::socket::shutdown_send, ignored);
-  armReadTimer(state_->draining() ? kDrainingLingerTimeout : kLingerTimeout);
+  arm(readDeadline_, state_->draining() ? kDrainingLingerTimeout : kLingerTimeout);
   if (!reading_)
     discard(); // otherwise the pending read's completion closes
 }
@@ -339,44 +381,54 @@ void Session::onDrain() {
 
 // ---- timers --------------------------------------------------------------------------------
 
-void Session::armReadTimer(Duration timeout) {
-  const std::uint64_t generation = ++readGeneration_;
-  readTimer_.expires_after(timeout);
-  readTimer_.async_wait([self = shared_from_this(), generation, timeout](ErrorCode ec) {
-    self->onReadTimer(ec, generation, timeout);
+void Session::arm(Deadline& deadline, Duration timeout) {
+  deadline.timeout = timeout;
+  deadline.at = Clock::now() + timeout;
+  deadline.armed = true;
+  if (!deadline.waiting || deadline.at < deadline.wakeAt)
+    wait(deadline);
+}
+
+void Session::wait(Deadline& deadline) {
+  deadline.waiting = true;
+  deadline.wakeAt = deadline.at;
+  const std::uint64_t generation = ++deadline.generation;
+  deadline.timer.expires_at(deadline.at); // a pending wait wakes with a stale generation
+  deadline.timer.async_wait([self = shared_from_this(), &deadline, generation](ErrorCode) {
+    self->onWake(deadline, generation);
   });
 }
 
-void Session::onReadTimer(ErrorCode ec, std::uint64_t generation, Duration timeout) {
-  if (ec || generation != readGeneration_ || closed_ || !reading_)
+void Session::onWake(Deadline& deadline, std::uint64_t generation) {
+  if (generation != deadline.generation)
+    return;
+  deadline.waiting = false;
+  if (closed_ || !deadline.armed)
+    return;
+  if (Clock::now() < deadline.at)
+    return wait(deadline);
+  deadline.armed = false;
+  if (&deadline == &writeDeadline_) {
+    if (writing_)
+      closeNow();
+    return;
+  }
+  onReadTimeout();
+}
+
+void Session::onReadTimeout() {
+  if (!reading_)
     return;
   // A client waiting for owed responses is not slow: only an idle connection times out.
   if (!lingering_ && !queue_.empty())
-    return armReadTimer(timeout);
+    return arm(readDeadline_, readDeadline_.timeout);
   closeNow();
 }
 
-void Session::cancelReadTimer() noexcept {
-  ++readGeneration_;
+void Session::cancel(Deadline& deadline) noexcept {
+  deadline.armed = false;
   try {
-    readTimer_.cancel();
-  } catch (...) {
-  }
-}
-
-void Session::armWriteTimer() {
-  const std::uint64_t generation = ++writeGeneration_;
-  writeTimer_.expires_after(options_.writeTimeout);
-  writeTimer_.async_wait([self = shared_from_this(), generation](ErrorCode ec) {
-    if (!ec && generation == self->writeGeneration_ && self->writing_)
-      self->closeNow();
-  });
-}
-
-void Session::cancelWriteTimer() noexcept {
-  ++writeGeneration_;
-  try {
-    writeTimer_.cancel();
+    deadline.timer.cancel();
   } catch (...) {
   }
 }

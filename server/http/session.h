@@ -3,6 +3,7 @@
 #include "http_types.h"
 #include "net.h"
 #include "server_state.h"
+#include "wire_response.h"
 
 #include <boost/beast/core/flat_buffer.hpp>
 #include <boost/optional/optional.hpp>
@@ -11,7 +12,9 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace strahler::http::detail {
 
@@ -19,14 +22,18 @@ namespace strahler::http::detail {
 /// other, answers protocol errors itself, hands GET/HEAD to the handler, and writes the
 /// responses strictly in request order even when the handler completes them out of order.
 /// Reading pauses while maxPipelined responses are owed. All members are used only on the
-/// session's strand; the public functions other than closeNow() may be called from any thread.
+/// session's I/O thread (its event loop has exactly one); the public functions other than
+/// closeNow() may be called from any thread. A handler that answers at once, on that thread,
+/// is answered without a round trip through the event loop.
 /// Timeouts use two plain timers instead of beast::tcp_stream's expiry: that one closes the
 /// socket when a read-ahead times out, even while a slow handler still owes a response, and its
 /// expires_after() asserts when a read and a write are both pending, as they are when pipelining.
+/// The timers are lazy: a deadline that moves later is only recorded, and a timer that wakes
+/// before its deadline sleeps again, so a busy connection does not touch them per request.
 class Session : public std::enable_shared_from_this<Session> {
 public:
-  /// A session for an accepted `socket` whose executor is a strand of the state's io_context.
-  Session(std::shared_ptr<ServerState> state, tcp::socket socket);
+  /// A session for an accepted `socket`, on the I/O thread that runs its executor.
+  Session(std::shared_ptr<ServerState> state, Socket socket);
   ~Session();
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
@@ -37,35 +44,51 @@ public:
   void drain();
   /// Closes the connection at once; requests still in flight are dropped.
   void forceClose();
-  /// Closes the connection now. Only on the session's strand, or when no I/O thread runs.
+  /// Closes the connection now. Only on the session's thread, or when no I/O thread runs.
   void closeNow() noexcept;
 
 private:
+  using Clock = std::chrono::steady_clock;
+  using Duration = Clock::duration;
+
   /// One request's place in the pipeline.
   struct Exchange {
-    std::uint64_t sequence = 0; ///< Position in the connection's request order.
-    std::string method;         ///< As sent, for the access log.
-    std::string target;         ///< As sent, for the access log.
-    unsigned version = 11;      ///< 10 or 11.
-    bool head = false;          ///< Drop the body when writing.
-    bool keepAlive = false;     ///< The connection may stay open after this response.
-    std::chrono::steady_clock::time_point start; ///< When the header was complete.
-    std::string route = "error";                 ///< Metrics label of the response.
-    std::shared_ptr<WireResponse> message;       ///< Set once the response is ready.
+    std::uint64_t sequence = 0;          ///< Position in the connection's request order.
+    std::string method;                  ///< As sent, for the access log (empty when it is off).
+    std::string target;                  ///< As sent, for the access log (empty when it is off).
+    unsigned version = 11;               ///< 10 or 11.
+    bool head = false;                   ///< Drop the body when writing.
+    bool keepAlive = false;              ///< The connection may stay open after this response.
+    Clock::time_point start;             ///< When the header was complete.
+    std::string route = "error";         ///< Metrics label of the response.
+    std::optional<WireResponse> message; ///< Set once the response is ready.
   };
-  using Duration = std::chrono::steady_clock::duration;
+
+  /// A lazily re-armed timeout (see the class comment).
+  struct Deadline {
+    explicit Deadline(const Executor& executor) : timer(executor) {}
+    Timer timer;
+    Duration timeout{};           ///< Of the last arm().
+    Clock::time_point at;         ///< Expiry, while armed.
+    Clock::time_point wakeAt;     ///< End of the pending wait, while waiting.
+    std::uint64_t generation = 0; ///< Of the pending wait; older wakes are ignored.
+    bool armed = false;
+    bool waiting = false;
+  };
 
   void doRead();
   void waitForRequest();
   void onRequestStart(ErrorCode ec, std::size_t bytes);
-  void readHeader();
-  void onHeader(ErrorCode ec, std::size_t bytes);
+  void parseBuffered();
+  void readMore();
+  void onMoreRead(ErrorCode ec, std::size_t bytes);
+  void onHeader();
   void onReadFailed(const ErrorCode& ec);
   bool stopReadingIfClosing();
 
   void dispatch();
   void answerParseError(const ErrorCode& ec);
-  Exchange& enqueue(std::string method, std::string target, unsigned version, bool head,
+  Exchange& enqueue(std::string_view method, std::string_view target, unsigned version, bool head,
                     bool keepAlive);
   void callHandler(std::uint64_t sequence, const Request& request);
   void postAnswer(std::uint64_t sequence, Response response);
@@ -79,25 +102,25 @@ private:
   void closeIfIdle();
   void onDrain();
 
-  void armReadTimer(Duration timeout);
-  void onReadTimer(ErrorCode ec, std::uint64_t generation, Duration timeout);
-  void cancelReadTimer() noexcept;
-  void armWriteTimer();
-  void cancelWriteTimer() noexcept;
+  void arm(Deadline& deadline, Duration timeout);
+  void wait(Deadline& deadline);
+  void onWake(Deadline& deadline, std::uint64_t generation);
+  void onReadTimeout();
+  static void disarm(Deadline& deadline) noexcept { deadline.armed = false; }
+  static void cancel(Deadline& deadline) noexcept;
 
   std::shared_ptr<ServerState> state_;
   const ServerOptions& options_;
-  tcp::socket socket_;
-  const tcp::socket::executor_type executor_; ///< The strand; copied so any thread may post.
-  net::steady_timer readTimer_;
-  net::steady_timer writeTimer_;
+  Socket socket_;
+  const Executor executor_; ///< The I/O thread's; copied so any thread may post.
+  Deadline readDeadline_;
+  Deadline writeDeadline_;
   beast::flat_buffer buffer_;
   boost::optional<RequestParser> parser_;
   std::deque<Exchange> queue_; ///< Requests whose responses are owed, in order.
+  std::string head_;           ///< Header block of the response being written.
   std::uint64_t nextSequence_ = 0;
-  std::uint64_t readGeneration_ = 0;  ///< Tells a stale read timeout from the current one.
-  std::uint64_t writeGeneration_ = 0; ///< Tells a stale write timeout from the current one.
-  std::size_t discarded_ = 0;         ///< Bytes thrown away while lingering.
+  std::size_t discarded_ = 0; ///< Bytes thrown away while lingering.
   bool firstRequest_ = true;
   bool reading_ = false;   ///< A read (idle wait, header or discard) is pending.
   bool writing_ = false;   ///< A write is pending.

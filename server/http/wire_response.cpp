@@ -1,6 +1,11 @@
 #include "wire_response.h"
 
+#include "net.h"
+
+#include <boost/beast/http/status.hpp>
+
 #include <array>
+#include <charconv>
 #include <ctime>
 
 namespace strahler::http::detail {
@@ -37,6 +42,26 @@ bool isBodiless(int status) noexcept {
   return status == 204 || status == 304;
 }
 
+/// `value` without leading and trailing spaces and tabs (optional whitespace, RFC 9110 5.5).
+std::string_view trimmed(std::string_view value) noexcept {
+  const std::size_t first = value.find_first_not_of(" \t");
+  if (first == std::string_view::npos)
+    return {};
+  return value.substr(first, value.find_last_not_of(" \t") - first + 1);
+}
+
+void appendField(std::string& out, std::string_view name, std::string_view value) {
+  out.append(name);
+  out.append(": ");
+  out.append(value);
+  out.append("\r\n");
+}
+
+std::string_view decimal(std::array<char, 24>& text, std::size_t value) noexcept {
+  const auto end = std::to_chars(text.data(), text.data() + text.size(), value).ptr;
+  return {text.data(), static_cast<std::size_t>(end - text.data())};
+}
+
 } // namespace
 
 bool isServerOwnedHeader(std::string_view name) noexcept {
@@ -58,6 +83,18 @@ std::string httpDate(std::chrono::system_clock::time_point time) {
   return std::string(text.data(), n);
 }
 
+std::string_view currentHttpDate() {
+  thread_local std::time_t second = -1;
+  thread_local std::string text;
+  const auto now = std::chrono::system_clock::now();
+  const std::time_t nowSecond = std::chrono::system_clock::to_time_t(now);
+  if (nowSecond != second) {
+    text = httpDate(now);
+    second = nowSecond;
+  }
+  return text;
+}
+
 Response preflightResponse() {
   Response response;
   response.status = 204;
@@ -69,30 +106,67 @@ Response preflightResponse() {
   return response;
 }
 
-std::shared_ptr<WireResponse> toWireResponse(Response response, unsigned version, bool head) {
+WireResponse toWireResponse(Response response, unsigned version, bool head) {
   if (response.status < 200 || response.status > 599)
     response =
         errorResponse(500, "handler returned invalid status " + std::to_string(response.status));
-  auto wire = std::make_shared<WireResponse>();
-  wire->version(version);
-  wire->result(static_cast<unsigned>(response.status));
-  for (const auto& [name, value] : response.headers)
-    if (!isServerOwnedHeader(name) && isWritableHeader(name, value))
-      wire->insert(toBeast(name), toBeast(value));
-  if (response.status >= 500 && !hasHeader(response, "cache-control"))
-    wire->set(bhttp::field::cache_control, "no-store");
-  wire->set(bhttp::field::date, httpDate(std::chrono::system_clock::now()));
-  wire->set(bhttp::field::server, toBeast(kServerName));
-  wire->set(bhttp::field::access_control_allow_origin, "*");
-  if (isBodiless(response.status))
+  WireResponse wire;
+  wire.status = static_cast<unsigned>(response.status);
+  wire.version = version == 10 ? 10 : 11;
+  if (response.preparedFields) {
+    wire.sharedFields = std::move(response.preparedFields);
+  } else {
+    wire.ownFields = prepareFields(response);
+  }
+  if (head || isBodiless(response.status))
     return wire;
-  std::shared_ptr<const std::string> body =
-      response.sharedBody ? std::move(response.sharedBody)
-                          : std::make_shared<const std::string>(std::move(response.body));
-  wire->set(bhttp::field::content_length, std::to_string(body->size()));
-  if (!head)
-    wire->body() = std::move(body);
+  wire.body = response.sharedBody ? std::move(response.sharedBody)
+                                  : std::make_shared<const std::string>(std::move(response.body));
   return wire;
 }
 
+void appendHead(std::string& out, const WireResponse& response, bool keepAlive,
+                std::string_view date) {
+  const unsigned status = response.status;
+  const char code[] = {' ', static_cast<char>('0' + status / 100 % 10),
+                       static_cast<char>('0' + status / 10 % 10),
+                       static_cast<char>('0' + status % 10), ' '};
+  out.append(response.version == 10 ? "HTTP/1.0" : "HTTP/1.1");
+  out.append(code, sizeof code);
+  out.append(toStd(bhttp::obsolete_reason(static_cast<bhttp::status>(status))));
+  out.append("\r\n");
+  out.append(response.fields());
+  appendField(out, "Date", date);
+  if (response.version == 10 && keepAlive) {
+    appendField(out, "Connection", "keep-alive");
+  } else if (response.version != 10 && !keepAlive) {
+    appendField(out, "Connection", "close");
+  }
+  out.append("\r\n");
+}
+
 } // namespace strahler::http::detail
+
+namespace strahler::http {
+
+std::string prepareFields(const Response& response) {
+  using namespace detail;
+  std::string out;
+  out.reserve(192);
+  for (const auto& [name, value] : response.headers)
+    if (!isServerOwnedHeader(name) && isWritableHeader(name, value))
+      appendField(out, name, trimmed(value));
+  if (response.status >= 500 && !hasHeader(response, "cache-control"))
+    appendField(out, "Cache-Control", "no-store");
+  appendField(out, "Server", kServerName);
+  appendField(out, "Access-Control-Allow-Origin", "*");
+  if (!isBodiless(response.status)) {
+    std::array<char, 24> text{};
+    appendField(
+        out, "Content-Length",
+        decimal(text, response.sharedBody ? response.sharedBody->size() : response.body.size()));
+  }
+  return out;
+}
+
+} // namespace strahler::http
