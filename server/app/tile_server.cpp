@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -19,17 +20,45 @@ using nlohmann::json;
 constexpr const char* kTileCacheControl = "public, max-age=86400, immutable";
 constexpr int kTileJsonMaxZoom = 16; // DEM detail advertised; deeper tiles are still served
 
-std::string hex64(std::uint64_t v) {
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(v));
-  return text;
-}
+constexpr std::uint64_t kFnvOffset = 1469598103934665603ull;
 
-std::uint64_t fnv1a(const std::string& text) {
-  std::uint64_t h = 1469598103934665603ull;
+/// FNV-1a of `text`, continuing from `h` (so that hashing parts equals hashing their concat).
+std::uint64_t fnv1a(std::string_view text, std::uint64_t h = kFnvOffset) {
   for (unsigned char c : text)
     h = (h ^ c) * 1099511628211ull;
   return h;
+}
+
+/// The strong ETag of a tile: "\"" + 16 hex digits of fnv1a(worldKey|tileKey) + "\"".
+std::string tileEtag(const std::string& worldKey, const std::string& tileKey) {
+  std::uint64_t h = fnv1a(tileKey, fnv1a("|", fnv1a(worldKey)));
+  std::string etag(18, '"');
+  for (int i = 16; i >= 1; --i, h >>= 4)
+    etag[static_cast<std::size_t>(i)] = "0123456789abcdef"[h & 0xF];
+  return etag;
+}
+
+/// Header fields of a tile's 200 response.
+std::vector<std::pair<std::string, std::string>> tileHeaders(const service::CachedTile& t) {
+  return {{"Content-Type", t.mimeType},
+          {"ETag", t.etag},
+          {"Cache-Control", kTileCacheControl},
+          {"Server-Timing", "eval;dur=" + std::to_string(t.evaluateMs) +
+                                ", encode;dur=" + std::to_string(t.encodeMs)}};
+}
+
+/// The 200 response carrying `tile`: its bytes and prepared header fields alias the cached
+/// tile, so a cache hit formats and copies nothing.
+http::Response tileResponse(const std::shared_ptr<const service::CachedTile>& tile) {
+  http::Response r;
+  r.sharedBody = std::shared_ptr<const std::string>(tile, &tile->bytes);
+  if (tile->httpFields.empty()) {
+    r.headers = tileHeaders(*tile);
+  } else {
+    r.preparedFields = std::shared_ptr<const std::string>(tile, &tile->httpFields);
+  }
+  r.route = "tile";
+  return r;
 }
 
 http::Response jsonResponse(const json& body, const std::string& route) {
@@ -351,22 +380,35 @@ void TileServer::tile(const ServedWorld& w, tiling::SchemeKind scheme,
                                              " is outside the grid (zoom 0.." +
                                              std::to_string(w.tiles->scheme(scheme).maxZoom()) +
                                              ")"));
-  const std::string key = w.id + "|" + s[2] + "|" + s[3] + "|" + s[4] + "|" + last.substr(0, dot) +
-                          "|" + formatName + "|" + std::to_string(size);
-  const std::string etag = "\"" + hex64(fnv1a(w.cacheKey + "|" + key)) + "\"";
-  if (etagMatches(request.header("if-none-match"), etag)) {
-    http::Response r;
-    r.status = 304;
-    r.headers = {{"ETag", etag}, {"Cache-Control", kTileCacheControl}};
-    r.route = "tile";
-    return done(std::move(r));
+  const std::string_view yText = std::string_view(last).substr(0, dot);
+  std::string key;
+  key.reserve(w.id.size() + s[2].size() + s[3].size() + s[4].size() + yText.size() +
+              formatName.size() + 12);
+  for (std::string_view part :
+       {std::string_view(w.id), std::string_view(s[2]), std::string_view(s[3]),
+        std::string_view(s[4]), yText, std::string_view(formatName)})
+    key.append(part).push_back('|');
+  char sizeText[12];
+  key.append(sizeText, std::to_chars(sizeText, sizeText + sizeof sizeText, size).ptr);
+  if (const std::string ifNoneMatch = request.header("if-none-match"); !ifNoneMatch.empty()) {
+    const std::string etag = tileEtag(w.cacheKey, key);
+    if (etagMatches(ifNoneMatch, etag)) {
+      http::Response r;
+      r.status = 304;
+      r.headers = {{"ETag", etag}, {"Cache-Control", kTileCacheControl}};
+      r.route = "tile";
+      return done(std::move(r));
+    }
   }
+  if (auto hit = cache_.find(key))
+    return done(tileResponse(hit));
   const TileService* service = w.tiles.get();
-  auto compute = [this, service, req, etag]() -> service::TileCache::Outcome {
+  auto compute = [this, service, req, etag = tileEtag(w.cacheKey, key)]() {
     auto rendered = service->render(req);
     if (!rendered)
-      return {nullptr, rendered.error().code == base::ErrorCode::kNotFound ? 404 : 500,
-              rendered.error().message};
+      return service::TileCache::Outcome{
+          nullptr, rendered.error().code == base::ErrorCode::kNotFound ? 404 : 500,
+          rendered.error().message};
     metrics_.recordTile(rendered.value().evaluateMs, rendered.value().encodeMs);
     auto t = std::make_shared<service::CachedTile>();
     t->bytes = std::move(rendered.value().bytes);
@@ -374,11 +416,15 @@ void TileServer::tile(const ServedWorld& w, tiling::SchemeKind scheme,
     t->etag = etag;
     t->evaluateMs = rendered.value().evaluateMs;
     t->encodeMs = rendered.value().encodeMs;
-    return {std::move(t), 0, {}};
+    http::Response plain;
+    plain.headers = tileHeaders(*t);
+    plain.sharedBody = std::shared_ptr<const std::string>(t, &t->bytes);
+    t->httpFields = http::prepareFields(plain);
+    return service::TileCache::Outcome{std::move(t), 0, {}};
   };
   cache_.get(
       key, compute, [this](std::function<void()> work) { return pool_.submit(std::move(work)); },
-      [this, done = std::move(done)](const service::TileCache::Outcome& outcome) {
+      [done = std::move(done)](const service::TileCache::Outcome& outcome) {
         if (!outcome.tile) {
           http::Response r = http::errorResponse(outcome.errorStatus, outcome.errorMessage);
           if (outcome.errorStatus == 503)
@@ -386,17 +432,7 @@ void TileServer::tile(const ServedWorld& w, tiling::SchemeKind scheme,
           r.route = "tile";
           return done(std::move(r));
         }
-        const service::CachedTile& t = *outcome.tile;
-        http::Response r;
-        r.headers = {{"Content-Type", t.mimeType},
-                     {"ETag", t.etag},
-                     {"Cache-Control", kTileCacheControl},
-                     {"Server-Timing", "eval;dur=" + std::to_string(t.evaluateMs) +
-                                           ", encode;dur=" + std::to_string(t.encodeMs)}};
-        // Aliases the cached tile: its bytes go out without a copy.
-        r.sharedBody = std::shared_ptr<const std::string>(outcome.tile, &t.bytes);
-        r.route = "tile";
-        done(std::move(r));
+        done(tileResponse(outcome.tile));
       });
 }
 

@@ -22,7 +22,7 @@ constexpr std::size_t kEntryOverheadBytes = 64;
 
 std::size_t entryBytes(const std::string& key, const CachedTile& tile) {
   return key.size() + tile.bytes.size() + tile.mimeType.size() + tile.etag.size() +
-         kEntryOverheadBytes;
+         tile.httpFields.size() + kEntryOverheadBytes;
 }
 
 /// The requests waiting for one computation. Its identity tells a finishing computation
@@ -86,7 +86,7 @@ struct CacheCore {
   TileCacheStats counters; ///< entries and inFlight are derived in stats().
 
   /// Under the lock: the cached tile of `key`, now the most recently used, or null.
-  std::shared_ptr<const CachedTile> lookup(const std::string& key) {
+  std::shared_ptr<const CachedTile> lookup(std::string_view key) {
     const auto found = index.find(key);
     if (found == index.end()) {
       return nullptr;
@@ -263,6 +263,12 @@ void TileCache::get(const std::string& key, const Compute& compute, const Schedu
   } else if (started) {
     startFlight(impl_->core, key, std::move(started), compute, schedule);
   }
+}
+
+std::shared_ptr<const CachedTile> TileCache::find(std::string_view key) {
+  CacheCore& core = *impl_->core;
+  std::lock_guard lock(core.mutex);
+  return core.lookup(key);
 }
 
 TileCacheStats TileCache::stats() const {

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace strahler::service {
 
@@ -13,6 +14,9 @@ struct CachedTile {
   std::string bytes;
   std::string mimeType;
   std::string etag; ///< Strong ETag, quoted.
+  /// The header fields of the tile's HTTP response, serialised once by the server when the
+  /// tile is made (opaque to the cache; may be empty).
+  std::string httpFields;
   double evaluateMs = 0.0;
   double encodeMs = 0.0;
 };
@@ -22,7 +26,7 @@ struct TileCacheStats {
   std::size_t hits = 0;
   std::size_t misses = 0;
   std::size_t evictions = 0;
-  std::size_t bytes = 0; ///< Bytes held now (key, tile bytes, MIME type, ETag + 64 per entry).
+  std::size_t bytes = 0; ///< Bytes held now (key and every string of the tile, + 64 per entry).
   std::size_t entries = 0;
   std::size_t inFlight = 0;     ///< Distinct tiles being computed now.
   std::size_t coalesced = 0;    ///< Requests that waited for another request's computation.
@@ -63,6 +67,10 @@ public:
   /// so a TileCache may be destroyed while its computations are still queued.
   void get(const std::string& key, const Compute& compute, const Schedule& schedule,
            Callback callback);
+
+  /// The cached tile of `key`, now the most recently used, counted as a hit; null (and not
+  /// counted) when it is not cached. A cheap first try for get(), which counts the miss.
+  std::shared_ptr<const CachedTile> find(std::string_view key);
 
   /// Current counters.
   TileCacheStats stats() const;

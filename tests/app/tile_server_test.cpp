@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <thread>
 
@@ -167,6 +168,36 @@ TEST(TileServer, ConditionalRequestsAndHead) {
   EXPECT_EQ(head.headers["content-type"], first.headers["content-type"]);
   // Same bytes for the same tile, every time.
   EXPECT_EQ(request(s.port(), path).body, first.body);
+}
+
+TEST(TileServer, CachedTilesCarryTheSameHeadersAsComputedOnes) {
+  Running s;
+  const std::string path = "/worlds/island/tiles/10/433/373.png";
+  const auto computed = request(s.port(), path);
+  const auto cached = request(s.port(), path);
+  const auto head = request(s.port(), path, "HEAD");
+  ASSERT_EQ(s.tiles.cache().stats().hits, 2u);
+  for (const auto* r : {&computed, &cached, &head}) {
+    ASSERT_EQ(r->status, 200);
+    std::vector<std::string> names;
+    for (const auto& [name, value] : r->headers)
+      names.push_back(name);
+    std::sort(names.begin(), names.end());
+    // (Connection: close answers the test client's own Connection: close.)
+    EXPECT_EQ(names, (std::vector<std::string>{"access-control-allow-origin", "cache-control",
+                                               "connection", "content-length", "content-type",
+                                               "date", "etag", "server", "server-timing"}));
+    EXPECT_EQ(r->headers.at("content-type"), "image/png");
+    EXPECT_EQ(r->headers.at("content-length"), std::to_string(computed.body.size()));
+    EXPECT_EQ(r->headers.at("etag"), computed.headers.at("etag"));
+    EXPECT_EQ(r->headers.at("server-timing"), computed.headers.at("server-timing"));
+    EXPECT_EQ(r->headers.at("cache-control"), "public, max-age=86400, immutable");
+  }
+  EXPECT_EQ(cached.body, computed.body);
+  EXPECT_TRUE(head.body.empty());
+  const std::string& etag = computed.headers.at("etag");
+  EXPECT_EQ(etag.size(), 18u); // "\"" + 16 hex digits + "\""
+  EXPECT_EQ(etag.find_first_not_of("0123456789abcdef", 1), 17u) << etag;
 }
 
 TEST(TileServer, ConcurrentRequestsForOneTileComputeItOnce) {

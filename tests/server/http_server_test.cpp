@@ -58,6 +58,45 @@ TEST(HttpServer, HeadSendsTheHeadersOfGetWithoutTheBody) {
   EXPECT_EQ(withoutDate(head->headers), withoutDate(get->headers));
 }
 
+/// `bytes` with every Date value replaced by "-".
+std::string withoutDateValues(std::string bytes) {
+  for (std::size_t at = bytes.find("\r\nDate: "); at != std::string::npos;
+       at = bytes.find("\r\nDate: ", at + 1)) {
+    const std::size_t value = at + 8;
+    bytes.replace(value, bytes.find("\r\n", value) - value, "-");
+  }
+  return bytes;
+}
+
+TEST(HttpServer, PreparedFieldsGoOutByteForByteAsTheFieldsTheyWereMadeFrom) {
+  TestServer server;
+  // Each case: request line and headers, then a second request that closes the connection,
+  // so that everything the server sends can be read to the end.
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"GET ", " HTTP/1.1\r\nHost: t\r\n\r\n"},
+      {"HEAD ", " HTTP/1.1\r\nHost: t\r\n\r\n"},
+      {"GET ", " HTTP/1.0\r\nConnection: keep-alive\r\n\r\n"},
+      {"GET ", " HTTP/1.0\r\n\r\n"},
+  };
+  for (const char* status : {"200", "304", "404", "503"}) {
+    for (const auto& [method, rest] : cases) {
+      std::string sent[2];
+      for (int prepared = 0; prepared < 2; ++prepared) {
+        const std::string target = std::string("/fields/") + status + (prepared ? "?prepared" : "");
+        Connection connection(server.port());
+        ASSERT_TRUE(connection.send(method + target + rest + method + target +
+                                    " HTTP/1.1\r\nHost: t\r\nConnection: close\r\n\r\n"));
+        sent[prepared] = connection.readUntilClose(2000ms);
+      }
+      EXPECT_EQ(withoutDateValues(sent[1]), withoutDateValues(sent[0])) << method << rest;
+      EXPECT_NE(sent[0].find("HTTP/1."), std::string::npos);
+      EXPECT_NE(sent[0].find("X-Padded: padded value\r\n"), std::string::npos) << sent[0];
+      EXPECT_EQ(sent[0].find("Injected"), std::string::npos) << sent[0];
+      EXPECT_EQ(sent[0].find("not this one"), std::string::npos) << sent[0];
+    }
+  }
+}
+
 TEST(HttpServer, HeadIsForwardedAsGetWithTheHeadFlag) {
   TestServer server;
   const auto response = fetch(server.port(), "HEAD /abc HTTP/1.1\r\nHost: t\r\n\r\n");

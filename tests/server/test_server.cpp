@@ -119,6 +119,18 @@ void TestServer::handle(const Request& request, std::function<void(Response)> do
     done(text("first"));
     return done(text("second")); // a handler bug: asserts in debug builds, ignored otherwise
   }
+  if (target.rfind("/fields/", 0) == 0) { // /fields/N[?prepared]
+    Response response = text("fields", std::stoi(target.substr(8, 3)));
+    response.headers.emplace_back("ETag", "\"e\"");
+    response.headers.emplace_back("X-Padded", " \t padded value \t ");
+    response.headers.emplace_back("server", "not this one");
+    response.headers.emplace_back("X-Bad", "a\r\nInjected: yes");
+    if (target.ends_with("?prepared")) { // the fields must come from the prepared ones alone
+      response.preparedFields = std::make_shared<const std::string>(prepareFields(response));
+      response.headers.clear();
+    }
+    return done(std::move(response));
+  }
   if (target == "/x-test")
     return done(text(request.header("x-test")));
   Response response = text(target);

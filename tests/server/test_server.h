@@ -34,6 +34,8 @@ struct Observation {
 ///   /evil        a header with CR LF injected, which the server must drop
 ///   /twice       calls `done` twice (a handler bug)
 ///   /x-test      echoes the request's X-Test header (looked up lower-case)
+///   /fields/N    status N with padded, server-owned and malformed headers; with "?prepared"
+///                the same fields sent only through Response::preparedFields
 ///   anything else: 200 text/plain echoing the target, with X-Head: 1 for HEAD requests.
 class TestServer {
 public:

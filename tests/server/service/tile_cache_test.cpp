@@ -65,6 +65,40 @@ TEST(TileCache, ChargesKeyTileMimeEtagAndFixedOverheadPerEntry) {
   EXPECT_EQ(cache.stats().bytes, 5u + 300u + 9u + 5u + kEntryOverhead);
 }
 
+TEST(TileCache, ChargesPreparedHttpFieldsToo) {
+  TileCache cache(10000);
+  auto tile = std::make_shared<CachedTile>();
+  tile->bytes.assign(300, 'x');
+  tile->httpFields = "ETag: \"abc\"\r\n";
+  cache.get("key-1", computeReturning(tile), runInline, [](const TileCache::Outcome&) {});
+  EXPECT_EQ(cache.stats().bytes, 5u + 300u + tile->httpFields.size() + kEntryOverhead);
+}
+
+TEST(TileCache, FindReturnsCachedTilesAsHitsAndCountsNothingOtherwise) {
+  TileCache cache(10000);
+  EXPECT_EQ(cache.find("a"), nullptr);
+  EXPECT_EQ(cache.stats().hits + cache.stats().misses, 0u);
+  const auto stored = fetch(cache, "a");
+  EXPECT_EQ(cache.find("a"), stored);
+  EXPECT_EQ(cache.find("b"), nullptr);
+  const TileCacheStats stats = cache.stats();
+  EXPECT_EQ(stats.hits, 1u);
+  EXPECT_EQ(stats.misses, 1u);
+  EXPECT_EQ(stats.computations, 1u);
+}
+
+TEST(TileCache, FindRefreshesRecency) {
+  const std::size_t entry = 1 + 100 + kEntryOverhead;
+  TileCache cache(2 * entry);
+  fetch(cache, "a");
+  fetch(cache, "b");
+  ASSERT_NE(cache.find("a"), nullptr); // a is now more recent than b
+  fetch(cache, "c");                   // evicts b
+  EXPECT_NE(cache.find("a"), nullptr);
+  EXPECT_EQ(cache.find("b"), nullptr);
+  EXPECT_NE(cache.find("c"), nullptr);
+}
+
 TEST(TileCache, EvictsLeastRecentlyUsedFirst) {
   const std::size_t entry = 1 + 100 + kEntryOverhead;
   TileCache cache(3 * entry);
