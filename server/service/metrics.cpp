@@ -1,12 +1,15 @@
 #include "metrics.h"
 
+#include <algorithm>
 #include <array>
+#include <atomic>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <map>
+#include <memory>
 #include <mutex>
 #include <utility>
+#include <vector>
 
 namespace strahler::service {
 
@@ -29,21 +32,18 @@ std::string formatDouble(double value) {
   return std::string(buffer.data(), result.ptr);
 }
 
-/// A Prometheus histogram: per-bucket counts (made cumulative when rendered), sum, count.
+/// A Prometheus histogram recorded with relaxed atomics: per-bucket counts (made cumulative
+/// when rendered, the last one being +Inf, so the count is their total) and the sum.
 struct Histogram {
-  std::array<std::uint64_t, kBucketBounds.size()> buckets{}; ///< Not cumulative.
-  std::uint64_t count = 0;
-  double sum = 0.0;
+  std::array<std::atomic<std::uint64_t>, kBucketBounds.size() + 1> buckets{}; ///< Not cumulative.
+  std::atomic<double> sum{0.0};
 
-  void observe(double seconds) {
-    for (std::size_t i = 0; i < kBucketBounds.size(); ++i) {
-      if (seconds <= kBucketBounds[i]) {
-        ++buckets[i];
-        break;
-      }
-    }
-    ++count;
-    sum += seconds;
+  void observe(double seconds) noexcept {
+    std::size_t i = 0;
+    while (i < kBucketBounds.size() && seconds > kBucketBounds[i])
+      ++i;
+    buckets[i].fetch_add(1, std::memory_order_relaxed);
+    sum.fetch_add(seconds, std::memory_order_relaxed);
   }
 
   /// Appends the _bucket, _sum and _count lines; `labels` is empty or `name="value",...`.
@@ -51,16 +51,43 @@ struct Histogram {
     const std::string prefix = labels.empty() ? std::string() : labels + ",";
     std::uint64_t cumulative = 0;
     for (std::size_t i = 0; i < kBucketBounds.size(); ++i) {
-      cumulative += buckets[i];
+      cumulative += buckets[i].load(std::memory_order_relaxed);
       out += name + "_bucket{" + prefix + "le=\"" + kBucketLabels[i] + "\"} " +
              std::to_string(cumulative) + "\n";
     }
-    out += name + "_bucket{" + prefix + "le=\"+Inf\"} " + std::to_string(count) + "\n";
+    cumulative += buckets.back().load(std::memory_order_relaxed);
+    out += name + "_bucket{" + prefix + "le=\"+Inf\"} " + std::to_string(cumulative) + "\n";
     const std::string braces = labels.empty() ? std::string() : "{" + labels + "}";
-    out += name + "_sum" + braces + " " + formatDouble(sum) + "\n";
-    out += name + "_count" + braces + " " + std::to_string(count) + "\n";
+    out += name + "_sum" + braces + " " + formatDouble(sum.load(std::memory_order_relaxed)) + "\n";
+    out += name + "_count" + braces + " " + std::to_string(cumulative) + "\n";
   }
 };
+
+/// The requests of one status code within a route. Nodes are only ever prepended to a list
+/// and freed with the Metrics, so readers walk the lists without a lock.
+struct StatusCount {
+  StatusCount(int code, StatusCount* after) : status(code), next(after) {}
+  const int status;
+  std::atomic<std::uint64_t> count{0};
+  StatusCount* const next;
+};
+
+/// Everything recorded for one route label.
+struct RouteSeries {
+  RouteSeries(std::string label, RouteSeries* after) : route(std::move(label)), next(after) {}
+  const std::string route;
+  Histogram durations;
+  std::atomic<StatusCount*> statuses{nullptr};
+  RouteSeries* const next;
+};
+
+/// The node of `list` for which `matches` holds, or null.
+template <class Node, class Matches> Node* findIn(const std::atomic<Node*>& list, Matches matches) {
+  for (Node* node = list.load(std::memory_order_acquire); node != nullptr; node = node->next)
+    if (matches(*node))
+      return node;
+  return nullptr;
+}
 
 void appendHeader(std::string& out, const char* name, const char* type, const char* help) {
   out += std::string("# HELP ") + name + " " + help + "\n";
@@ -91,26 +118,75 @@ std::string escapeLabelValue(std::string_view value) {
 }
 
 struct Metrics::Impl {
-  mutable std::mutex mutex;
-  std::map<std::pair<std::string, int>, std::uint64_t> requests; ///< (route, status) -> count.
-  std::map<std::string, Histogram> durations;                    ///< Per route.
+  std::mutex growth; ///< Serialises adding routes and statuses; recording takes no lock.
+  std::atomic<RouteSeries*> routes{nullptr};
+  std::vector<std::unique_ptr<RouteSeries>> ownedRoutes;   ///< Guarded by `growth`.
+  std::vector<std::unique_ptr<StatusCount>> ownedStatuses; ///< Guarded by `growth`.
   Histogram evaluate;
   Histogram encode;
+
+  RouteSeries* findRoute(const std::string& route) const {
+    return findIn(routes, [&](const RouteSeries& r) { return r.route == route; });
+  }
+
+  /// The counter of (`route`, `status`), created the first time it is seen.
+  std::pair<RouteSeries*, StatusCount*> series(const std::string& route, int status) {
+    RouteSeries* r = findRoute(route);
+    StatusCount* s =
+        r ? findIn(r->statuses, [&](const StatusCount& c) { return c.status == status; }) : nullptr;
+    if (s != nullptr)
+      return {r, s};
+    std::lock_guard lock(growth);
+    if (r == nullptr && (r = findRoute(route)) == nullptr) {
+      ownedRoutes.push_back(
+          std::make_unique<RouteSeries>(route, routes.load(std::memory_order_relaxed)));
+      r = ownedRoutes.back().get();
+      routes.store(r, std::memory_order_release);
+    }
+    s = findIn(r->statuses, [&](const StatusCount& c) { return c.status == status; });
+    if (s == nullptr) {
+      ownedStatuses.push_back(
+          std::make_unique<StatusCount>(status, r->statuses.load(std::memory_order_relaxed)));
+      s = ownedStatuses.back().get();
+      r->statuses.store(s, std::memory_order_release);
+    }
+    return {r, s};
+  }
+
+  /// The routes sorted by label, and each one's statuses sorted by code.
+  std::vector<std::pair<const RouteSeries*, std::vector<const StatusCount*>>> sorted() const {
+    std::vector<std::pair<const RouteSeries*, std::vector<const StatusCount*>>> out;
+    for (const RouteSeries* r = routes.load(std::memory_order_acquire); r; r = r->next) {
+      std::vector<const StatusCount*> statuses;
+      for (const StatusCount* s = r->statuses.load(std::memory_order_acquire); s; s = s->next)
+        statuses.push_back(s);
+      std::sort(statuses.begin(), statuses.end(),
+                [](const StatusCount* a, const StatusCount* b) { return a->status < b->status; });
+      out.emplace_back(r, std::move(statuses));
+    }
+    std::sort(out.begin(), out.end(),
+              [](const auto& a, const auto& b) { return a.first->route < b.first->route; });
+    return out;
+  }
 
   void renderRequests(std::string& out) const {
     appendHeader(out, "strahler_http_requests_total", "counter",
                  "HTTP requests answered, by route and status code.");
-    for (const auto& [labels, count] : requests) {
-      out += "strahler_http_requests_total{" + routeLabel(labels.first) + ",status=\"" +
-             std::to_string(labels.second) + "\"} " + std::to_string(count) + "\n";
+    for (const auto& [route, statuses] : sorted()) {
+      for (const StatusCount* s : statuses) {
+        out += "strahler_http_requests_total{" + routeLabel(route->route) + ",status=\"" +
+               std::to_string(s->status) + "\"} " +
+               std::to_string(s->count.load(std::memory_order_relaxed)) + "\n";
+      }
     }
   }
 
   void renderDurations(std::string& out) const {
     appendHeader(out, "strahler_http_request_duration_seconds", "histogram",
                  "Time from request received to response written, by route.");
-    for (const auto& [route, histogram] : durations) {
-      histogram.render(out, "strahler_http_request_duration_seconds", routeLabel(route));
+    for (const auto& [route, statuses] : sorted()) {
+      route->durations.render(out, "strahler_http_request_duration_seconds",
+                              routeLabel(route->route));
     }
   }
 
@@ -129,28 +205,21 @@ Metrics::Metrics() : impl_(std::make_unique<Impl>()) {}
 Metrics::~Metrics() = default;
 
 void Metrics::recordRequest(const std::string& route, int status, double milliseconds) {
-  const double seconds = toSeconds(milliseconds);
-  std::lock_guard lock(impl_->mutex);
-  ++impl_->requests[{route, status}];
-  impl_->durations[route].observe(seconds);
+  const auto [series, count] = impl_->series(route, status);
+  count->count.fetch_add(1, std::memory_order_relaxed);
+  series->durations.observe(toSeconds(milliseconds));
 }
 
 void Metrics::recordTile(double evaluateMs, double encodeMs) {
-  const double evaluateSeconds = toSeconds(evaluateMs);
-  const double encodeSeconds = toSeconds(encodeMs);
-  std::lock_guard lock(impl_->mutex);
-  impl_->evaluate.observe(evaluateSeconds);
-  impl_->encode.observe(encodeSeconds);
+  impl_->evaluate.observe(toSeconds(evaluateMs));
+  impl_->encode.observe(toSeconds(encodeMs));
 }
 
 std::string Metrics::render(const std::string& gauges) const {
   std::string out;
-  {
-    std::lock_guard lock(impl_->mutex);
-    impl_->renderRequests(out);
-    impl_->renderDurations(out);
-    impl_->renderTileTimes(out);
-  }
+  impl_->renderRequests(out);
+  impl_->renderDurations(out);
+  impl_->renderTileTimes(out);
   out += gauges;
   if (!gauges.empty() && gauges.back() != '\n') {
     out += '\n'; // The format requires every line to end with a line feed.
@@ -159,9 +228,11 @@ std::string Metrics::render(const std::string& gauges) const {
 }
 
 std::size_t Metrics::requestCount(const std::string& route, int status) const {
-  std::lock_guard lock(impl_->mutex);
-  const auto found = impl_->requests.find({route, status});
-  return found == impl_->requests.end() ? 0 : static_cast<std::size_t>(found->second);
+  const RouteSeries* series = impl_->findRoute(route);
+  const StatusCount* count =
+      series ? findIn(series->statuses, [&](const StatusCount& c) { return c.status == status; })
+             : nullptr;
+  return count ? static_cast<std::size_t>(count->count.load(std::memory_order_relaxed)) : 0;
 }
 
 } // namespace strahler::service

@@ -12,7 +12,8 @@ namespace strahler::service {
 std::string escapeLabelValue(std::string_view value);
 
 /// Counters and histograms exposed at /metrics in the Prometheus text format (0.0.4).
-/// Thread-safe; recording is cheap (a lock per call).
+/// Thread-safe; recording takes no lock (relaxed atomic counters; a lock only the first time a
+/// route and status pair is seen), so I/O threads never wait for each other or for a scrape.
 class Metrics {
 public:
   Metrics();

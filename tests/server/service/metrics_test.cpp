@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <limits>
 #include <map>
 #include <regex>
@@ -180,6 +181,63 @@ TEST(Metrics, ConcurrentRecordingLosesNothing) {
   EXPECT_EQ(metrics.requestCount("tile", 200), static_cast<std::size_t>(kThreads * kPerThread));
   const std::string text = metrics.render({});
   EXPECT_EQ(sampleValue(text, "strahler_tile_encode_seconds_count"), kThreads * kPerThread);
+}
+
+TEST(Metrics, ConcurrentFirstRecordingsOfNewSeriesCreateEachOnceAndLoseNothing) {
+  constexpr int kThreads = 4;
+  constexpr int kRounds = 200;
+  const std::vector<std::string> routes = {"tile", "health", "metrics", "worlds", "rivers"};
+  const std::vector<int> statuses = {200, 304, 404, 500, 503};
+  Metrics metrics;
+  std::atomic<bool> recording{true};
+  std::jthread scraper([&] {
+    while (recording.load()) { // renders while series are being added
+      const std::string text = metrics.render({});
+      ASSERT_EQ(text.back(), '\n');
+    }
+  });
+  {
+    std::vector<std::jthread> threads;
+    for (int t = 0; t < kThreads; ++t) {
+      threads.emplace_back([&, t] {
+        for (int round = 0; round < kRounds; ++round) {
+          for (std::size_t i = 0; i < routes.size(); ++i) {
+            // Every thread visits the pairs in a different order, so first sightings race.
+            const std::string& route = routes[(i + static_cast<std::size_t>(t)) % routes.size()];
+            for (int status : statuses)
+              metrics.recordRequest(route, status, 2.0);
+          }
+        }
+      });
+    }
+  }
+  recording = false;
+  scraper.join();
+  const std::string text = metrics.render({});
+  for (const std::string& route : routes) {
+    for (int status : statuses) {
+      EXPECT_EQ(metrics.requestCount(route, status), static_cast<std::size_t>(kThreads * kRounds))
+          << route << " " << status;
+      const std::string series = "strahler_http_requests_total{route=\"" + route + "\",status=\"" +
+                                 std::to_string(status) + "\"}";
+      EXPECT_EQ(sampleValue(text, series), kThreads * kRounds) << series;
+      std::size_t lines = 0;
+      for (const std::string& line : linesOf(text))
+        lines += line.rfind(series + " ", 0) == 0 ? 1 : 0;
+      EXPECT_EQ(lines, 1u) << series; // created once, however many threads saw it first
+    }
+    const std::string labels = "{route=\"" + route + "\"}";
+    const double perRoute = kThreads * kRounds * static_cast<double>(statuses.size());
+    EXPECT_EQ(sampleValue(text, "strahler_http_request_duration_seconds_count" + labels), perRoute);
+    EXPECT_NEAR(sampleValue(text, "strahler_http_request_duration_seconds_sum" + labels),
+                perRoute * 0.002, 1e-9);
+    EXPECT_EQ(sampleValue(text, "strahler_http_request_duration_seconds_bucket{route=\"" + route +
+                                    "\",le=\"0.001\"}"),
+              0.0);
+    EXPECT_EQ(sampleValue(text, "strahler_http_request_duration_seconds_bucket{route=\"" + route +
+                                    "\",le=\"0.0025\"}"),
+              perRoute);
+  }
 }
 
 } // namespace
