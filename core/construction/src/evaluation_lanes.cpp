@@ -79,8 +79,6 @@ void store(double* to, Doubles d) noexcept {
   for (int k = 0; k < NoiseOctaves::kOctaves; ++k)
     gainPower *= gain;
   Doubles amplitude = weightedAmplitude * perWeight * (1.0 - gain) / (1.0 - gainPower);
-  // Octave amplitudes only decrease (0 ≤ G < 1), so once every lane's is negligible the rest
-  // are too.
   bool lanesSafe = true;
   for (int l = 0; l < kLanes; ++l)
     lanesSafe = lanesSafe && std::fabs(px[l]) < kLaneSafe && std::fabs(py[l]) < kLaneSafe;
@@ -89,7 +87,7 @@ void store(double* to, Doubles d) noexcept {
   for (int k = 0; k < a.fades->active; ++k, inverse *= 2.0) {
     const LaneMask present = amplitude >= kNegligibleAmplitude;
     if (!base::anyLane(present))
-      break;
+      break; // amplitudes only decrease (0 ≤ G < 1): every later octave is negligible too
     const Doubles coefficient = a.fades->fade[static_cast<std::size_t>(k)] * amplitude;
     const Doubles value =
         noiseAt(*a.noise, px * inverse + 37.1 * k, py * inverse + -11.7 * k, lanesSafe);
@@ -180,31 +178,17 @@ void store(double* to, Doubles d) noexcept {
     bestElevation = closer ? pa.elevation + (pb.elevation - pa.elevation) * along : bestElevation;
     bestAlong = closer ? (static_cast<double>(k) + along) / last : bestAlong;
   }
-  Doubles distanceOut = load(a.distance), elevationOut = load(a.elevation),
-          alongOut = load(a.along);
-  store(a.distance, active ? bestDistance : distanceOut);
-  store(a.elevation, active ? bestElevation : elevationOut);
-  store(a.along, active ? bestAlong : alongOut);
+  store(a.distance, bestDistance);
+  store(a.elevation, bestElevation);
+  store(a.along, bestAlong);
 }
 
-void terrainBaseline(const TerrainLaneArgs& a) noexcept {
-  terrainKernel(a);
-}
-__attribute__((target("avx2"))) void terrainAvx2(const TerrainLaneArgs& a) noexcept {
-  terrainKernel(a);
-}
-__attribute__((target("avx512f"))) void terrainAvx512(const TerrainLaneArgs& a) noexcept {
-  terrainKernel(a);
-}
-void curveBaseline(const CurveLaneArgs& a) noexcept {
-  curveKernel(a);
-}
-__attribute__((target("avx2"))) void curveAvx2(const CurveLaneArgs& a) noexcept {
-  curveKernel(a);
-}
-__attribute__((target("avx512f"))) void curveAvx512(const CurveLaneArgs& a) noexcept {
-  curveKernel(a);
-}
+/// A kernel compiled for one instruction set: the baseline (SSE2), AVX2 and AVX-512F.
+template <class Args, void (*kKernel)(const Args&) noexcept> struct Compiled {
+  static void baseline(const Args& a) noexcept { kKernel(a); }
+  __attribute__((target("avx2"))) static void avx2(const Args& a) noexcept { kKernel(a); }
+  __attribute__((target("avx512f"))) static void avx512(const Args& a) noexcept { kKernel(a); }
+};
 
 bool supported(InstructionSet set) noexcept {
   switch (set) {
@@ -232,28 +216,27 @@ std::atomic<InstructionSet>& current() noexcept {
 
 } // namespace
 
-void closestOnCurveLanes(const CurveLaneArgs& args) noexcept {
+/// Runs the build of `kKernel` for the instruction set in use.
+template <class Args, void (*kKernel)(const Args&) noexcept>
+void runCompiled(const Args& args) noexcept {
+  using Builds = Compiled<Args, kKernel>;
   switch (current().load(std::memory_order_relaxed)) {
   case InstructionSet::kAvx512:
-    return curveAvx512(args);
+    return Builds::avx512(args);
   case InstructionSet::kAvx2:
-    return curveAvx2(args);
+    return Builds::avx2(args);
   case InstructionSet::kBaseline:
     break;
   }
-  curveBaseline(args);
+  Builds::baseline(args);
+}
+
+void closestOnCurveLanes(const CurveLaneArgs& args) noexcept {
+  runCompiled<CurveLaneArgs, curveKernel>(args);
 }
 
 void terrainLanes(const TerrainLaneArgs& args) noexcept {
-  switch (current().load(std::memory_order_relaxed)) {
-  case InstructionSet::kAvx512:
-    return terrainAvx512(args);
-  case InstructionSet::kAvx2:
-    return terrainAvx2(args);
-  case InstructionSet::kBaseline:
-    break;
-  }
-  terrainBaseline(args);
+  runCompiled<TerrainLaneArgs, terrainKernel>(args);
 }
 
 } // namespace detail

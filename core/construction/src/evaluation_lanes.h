@@ -35,10 +35,10 @@ void terrainLanes(const TerrainLaneArgs& args) noexcept;
 /// Segments of a river curve per chunk box (World keeps one box per run of kChunk segments).
 inline constexpr std::size_t kChunk = 8;
 
-/// One closest-point search on a river curve for base::kLanes points (xs, ys). Lanes with
-/// active[l] == 0 are left alone. Results per lane: the distance to the curve (infinity when
-/// farther than the river's radius), the water elevation there and the fraction along the
-/// curve (0 upstream .. 1 downstream).
+/// One closest-point search on a river curve for base::kLanes points (xs, ys); lanes with
+/// active[l] == 0 are not searched. Results per lane: the distance to the curve (infinity when
+/// not searched or farther than the river's radius), the water elevation there and the
+/// fraction along the curve (0 upstream .. 1 downstream).
 struct CurveLaneArgs {
   const primitives::RiverPrimitive* river = nullptr;
   std::span<const geometry::Aabb> chunks; ///< the box of each run of kChunk segments

@@ -177,11 +177,10 @@ void World::heights(std::span<const Vec2> points, double spacing,
   for (std::size_t begin = 0; begin < points.size(); begin += kLanes) {
     const std::span<const Vec2> group =
         points.subspan(begin, std::min(kLanes, points.size() - begin));
-    const std::span<const std::uint32_t> terrain = terrainGrid_.cellAt(group[0]);
-    const std::span<const std::uint32_t> rivers = riverGrid_.cellAt(group[0]);
+    const std::vector<std::uint32_t>& terrain = terrainGrid_.cellAt(group[0]);
+    const std::vector<std::uint32_t>& rivers = riverGrid_.cellAt(group[0]);
     const bool shared = std::all_of(group.begin(), group.end(), [&](Vec2 p) {
-      return terrainGrid_.cellAt(p).data() == terrain.data() &&
-             riverGrid_.cellAt(p).data() == rivers.data();
+      return &terrainGrid_.cellAt(p) == &terrain && &riverGrid_.cellAt(p) == &rivers;
     });
     if (shared) {
       heightsFrom(group, spacing, terrain, rivers, Coast::kUnknown,

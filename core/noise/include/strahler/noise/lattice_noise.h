@@ -37,18 +37,11 @@ public:
     const Doubles fy = ty > py ? ty - 1.0 : ty;
     const Words cx = __builtin_convertvector(__builtin_convertvector(fx, base::Int32s), Words);
     const Words cy = __builtin_convertvector(__builtin_convertvector(fy, base::Int32s), Words);
-    const Words hx0 = cx * kPrimeX, hx1 = (cx + 1u) * kPrimeX;
-    const Words hy0 = cy * kPrimeY ^ seed_, hy1 = (cy + 1u) * kPrimeY ^ seed_;
-    const Doubles x = px - fx, y = py - fy;
-    const Doubles x1 = x - 1.0, y1 = y - 1.0;
-    const Doubles n00 = dotGradient(hx0 ^ hy0, x, y);
-    const Doubles n10 = dotGradient(hx1 ^ hy0, x1, y);
-    const Doubles n01 = dotGradient(hx0 ^ hy1, x, y1);
-    const Doubles n11 = dotGradient(hx1 ^ hy1, x1, y1);
-    const Doubles u = fade(x), v = fade(y);
-    const Doubles a = n00 + u * (n10 - n00);
-    const Doubles b = n01 + u * (n11 - n01);
-    return a + v * (b - a);
+    return cellNoise(
+        cx, cy, px - fx,
+        py - fy, [this](Words h, Doubles dx, Doubles dy) __attribute__((always_inline)) {
+          return dotGradient(h, dx, dy);
+        });
   }
 
 private:
@@ -63,6 +56,23 @@ private:
     h ^= h >> 15;
     h *= 0x2c1b3c6du;
     return h >> 28;
+  }
+  /// Perlin's blend of the gradients of the four corners of lattice cell (cx, cy) at offset
+  /// (x, y) inside it; dot(h, dx, dy) is the gradient picked by hash h dotted with (dx, dy).
+  /// at() and atLanes() share it, so both perform the same operations.
+  template <class D, class W, class Dot>
+  [[gnu::always_inline]] D cellNoise(W cx, W cy, D x, D y, Dot&& dot) const noexcept {
+    const W hx0 = cx * kPrimeX, hx1 = (cx + 1u) * kPrimeX;
+    const W hy0 = (cy * kPrimeY) ^ seed_, hy1 = ((cy + 1u) * kPrimeY) ^ seed_;
+    const D x1 = x - 1.0, y1 = y - 1.0;
+    const D n00 = dot(hx0 ^ hy0, x, y);
+    const D n10 = dot(hx1 ^ hy0, x1, y);
+    const D n01 = dot(hx0 ^ hy1, x, y1);
+    const D n11 = dot(hx1 ^ hy1, x1, y1);
+    const D u = fade(x), v = fade(y);
+    const D a = n00 + u * (n10 - n00);
+    const D b = n01 + u * (n11 - n01);
+    return a + v * (b - a);
   }
   template <class T> static T fade(T t) noexcept {
     return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
