@@ -18,7 +18,6 @@ namespace {
 using base::Doubles;
 using base::kLanes;
 using base::LaneMask;
-using base::splat;
 
 /// Below this amplitude (m) an octave is left out.
 constexpr double kNegligibleAmplitude = 1e-3;
@@ -26,118 +25,156 @@ constexpr double kNegligibleAmplitude = 1e-3;
 /// LatticeNoise::kLaneLimit (octave offsets add < 500 lattice units).
 constexpr double kLaneSafe = noise::LatticeNoise::kLaneLimit - 1000.0;
 
-Doubles load(const double* v) noexcept {
-  Doubles d;
-  __builtin_memcpy(&d, v, sizeof d);
-  return d;
-}
+/// Eight samples per pass, in vector registers (tiles, rasters).
+struct Wide {
+  using D = Doubles;
+  using M = LaneMask;
+  [[gnu::always_inline]] static D load(const double* v) noexcept {
+    D d;
+    __builtin_memcpy(&d, v, sizeof d);
+    return d;
+  }
+  [[gnu::always_inline]] static M loadMask(const std::int64_t* v) noexcept {
+    M m;
+    __builtin_memcpy(&m, v, sizeof m);
+    return m;
+  }
+  [[gnu::always_inline]] static void store(double* to, D d) noexcept {
+    __builtin_memcpy(to, &d, sizeof d);
+  }
+  [[gnu::always_inline]] static D splat(double v) noexcept { return base::splat(v); }
+  [[gnu::always_inline]] static bool any(M m) noexcept { return base::anyLane(m); }
+  [[gnu::always_inline]] static M both(M a, M b) noexcept { return a & b; }
+  /// IEEE-exact; the file is built without errno so that this loop is one instruction.
+  [[gnu::always_inline]] static D sqrt(D v) noexcept {
+    for (int l = 0; l < kLanes; ++l)
+      v[l] = __builtin_sqrt(v[l]);
+    return v;
+  }
+  [[gnu::always_inline]] static bool allBelow(D x, D y, double limit) noexcept {
+    bool below = true;
+    for (int l = 0; l < kLanes; ++l)
+      below = below && std::fabs(x[l]) < limit && std::fabs(y[l]) < limit;
+    return below;
+  }
+  /// atLanes(), or at() lane by lane unless every lane is `safe` for atLanes().
+  [[gnu::always_inline]] static D noise(const noise::LatticeNoise& n, D x, D y,
+                                        bool safe) noexcept {
+    if (safe)
+      return n.atLanes(x, y);
+    D out;
+    for (int l = 0; l < kLanes; ++l)
+      out[l] = n.at({x[l], y[l]});
+    return out;
+  }
+};
 
-void store(double* to, Doubles d) noexcept {
-  __builtin_memcpy(to, &d, sizeof d);
-}
+/// One sample in scalar registers (single points): the operations of one lane of Wide.
+struct Single {
+  using D = double;
+  using M = bool;
+  [[gnu::always_inline]] static D load(const double* v) noexcept { return *v; }
+  [[gnu::always_inline]] static M loadMask(const std::int64_t* v) noexcept { return *v != 0; }
+  [[gnu::always_inline]] static void store(double* to, D d) noexcept { *to = d; }
+  [[gnu::always_inline]] static D splat(double v) noexcept { return v; }
+  [[gnu::always_inline]] static bool any(M m) noexcept { return m; }
+  [[gnu::always_inline]] static M both(M a, M b) noexcept { return a && b; }
+  [[gnu::always_inline]] static D sqrt(D v) noexcept { return __builtin_sqrt(v); }
+  [[gnu::always_inline]] static bool allBelow(D x, D y, double limit) noexcept {
+    return std::fabs(x) < limit && std::fabs(y) < limit;
+  }
+  [[gnu::always_inline]] static D noise(const noise::LatticeNoise& n, D x, D y, bool) noexcept {
+    return n.at({x, y});
+  }
+};
 
-/// The noise at every lane: atLanes(), or at() per lane where a lane is out of its range.
-[[gnu::always_inline]] inline Doubles noiseAt(const noise::LatticeNoise& noise, Doubles x,
-                                              Doubles y, bool lanesSafe) noexcept {
-  if (lanesSafe)
-    return noise.atLanes(x, y);
-  Doubles out;
-  for (int l = 0; l < kLanes; ++l)
-    out[l] = noise.at({x[l], y[l]});
-  return out;
-}
-
-/// B(T…) at kLanes points: Σ w_i c_i / Σ w_i plus the fBm of the blended amplitude A and gain
-/// G, octave k weighted by A (1 − G) / (1 − G^K) · G^k times its LOD fade, octaves below
-/// kNegligibleAmplitude left out. Lanes without any covering primitive get {0, 0}.
+/// B(T…) at the points of L (Wide or Single): Σ w_i c_i / Σ w_i plus the fBm of the blended
+/// amplitude A and gain G, octave k weighted by A (1 − G) / (1 − G^K) · G^k times its LOD
+/// fade, octaves below kNegligibleAmplitude left out. Points without any covering primitive
+/// get {0, 0}.
+template <class L>
 [[gnu::always_inline]] inline void terrainKernel(const TerrainLaneArgs& a) noexcept {
-  const Doubles px = load(a.xs), py = load(a.ys);
-  Doubles weight{}, weightedHeight{}, weightedAmplitude{}, weightedRoughness{}, count{};
+  using D = typename L::D;
+  using M = typename L::M;
+  const D px = L::load(a.xs), py = L::load(a.ys);
+  D weight{}, weightedHeight{}, weightedAmplitude{}, weightedRoughness{}, count{};
   const World::HotTerrain* hot = a.hot;
   for (const std::uint32_t i : a.ids) {
     const World::HotTerrain& t = hot[i];
-    const Doubles dx = px - t.center.x, dy = py - t.center.y;
-    const Doubles d2 = dx * dx + dy * dy;
-    const LaneMask inside = d2 < t.radius2;
-    const Doubles u = 1.0 - d2 * t.inverseRadius2;
-    const Doubles w = inside ? u * u : Doubles{}; // primitives::falloff, by a reciprocal
+    const D dx = px - t.center.x, dy = py - t.center.y;
+    const D d2 = dx * dx + dy * dy;
+    const M inside = d2 < t.radius2;
+    const D u = 1.0 - d2 * t.inverseRadius2;
+    const D w = inside ? u * u : D{}; // primitives::falloff, by a reciprocal
     weight += w;
     weightedHeight += w * t.elevation;
     weightedAmplitude += w * t.amplitude;
     weightedRoughness += w * t.roughness;
-    count += inside ? splat(1.0) : Doubles{};
+    count += inside ? L::splat(1.0) : D{};
   }
-  const LaneMask covered = weight > 0.0;
-  if (!base::anyLane(covered)) {
-    store(a.h, Doubles{});
-    store(a.w, Doubles{});
+  const M covered = weight > 0.0;
+  if (!L::any(covered)) {
+    L::store(a.h, D{});
+    L::store(a.w, D{});
     return;
   }
-  const Doubles perWeight = 1.0 / weight;
-  const Doubles gain = weightedRoughness * perWeight;
-  Doubles gainPower = splat(1.0);
+  const D perWeight = 1.0 / weight;
+  const D gain = weightedRoughness * perWeight;
+  D gainPower = L::splat(1.0);
   for (int k = 0; k < NoiseOctaves::kOctaves; ++k)
     gainPower *= gain;
-  Doubles amplitude = weightedAmplitude * perWeight * (1.0 - gain) / (1.0 - gainPower);
-  bool lanesSafe = true;
-  for (int l = 0; l < kLanes; ++l)
-    lanesSafe = lanesSafe && std::fabs(px[l]) < kLaneSafe && std::fabs(py[l]) < kLaneSafe;
-  Doubles noise{};
+  D amplitude = weightedAmplitude * perWeight * (1.0 - gain) / (1.0 - gainPower);
+  const bool lanesSafe = L::allBelow(px, py, kLaneSafe);
+  D noise{};
   double inverse = 1.0 / NoiseOctaves::kLongest; // wavelengths are powers of two: exact
   for (int k = 0; k < a.fades->active; ++k, inverse *= 2.0) {
-    const LaneMask present = amplitude >= kNegligibleAmplitude;
-    if (!base::anyLane(present))
+    const M present = amplitude >= kNegligibleAmplitude;
+    if (!L::any(present))
       break; // amplitudes only decrease (0 ≤ G < 1): every later octave is negligible too
-    const Doubles coefficient = a.fades->fade[static_cast<std::size_t>(k)] * amplitude;
-    const Doubles value =
-        noiseAt(*a.noise, px * inverse + 37.1 * k, py * inverse + -11.7 * k, lanesSafe);
+    const D coefficient = a.fades->fade[static_cast<std::size_t>(k)] * amplitude;
+    const D value =
+        L::noise(*a.noise, px * inverse + 37.1 * k, py * inverse + -11.7 * k, lanesSafe);
     noise = present ? noise + coefficient * value : noise;
     amplitude *= gain;
   }
-  store(a.h, covered ? weightedHeight / weight + noise : Doubles{});
-  store(a.w, covered ? weight / count : Doubles{});
+  L::store(a.h, covered ? weightedHeight / weight + noise : D{});
+  L::store(a.w, covered ? weight / count : D{});
 }
 
-/// Square root of every lane (IEEE-exact; the file is built without errno so that this
-/// loop becomes one vector instruction).
-[[gnu::always_inline]] inline Doubles sqrtLanes(Doubles v) noexcept {
-  for (int l = 0; l < kLanes; ++l)
-    v[l] = __builtin_sqrt(v[l]);
-  return v;
-}
-
-/// Squared distance from each lane to the box [lo, hi] (0 inside).
-[[gnu::always_inline]] inline Doubles boxDistance2(Doubles px, Doubles py, double loX, double loY,
-                                                   double hiX, double hiY) noexcept {
-  Doubles dx = loX - px, dy = loY - py;
-  const Doubles zero{};
+/// Squared distance from each point to the box [lo, hi] (0 inside).
+template <class D>
+[[gnu::always_inline]] inline D boxDistance2(D px, D py, double loX, double loY, double hiX,
+                                             double hiY) noexcept {
+  D dx = loX - px, dy = loY - py;
+  const D zero{};
   dx = dx > zero ? dx : zero;
   dy = dy > zero ? dy : zero;
-  const Doubles ex = px - hiX, ey = py - hiY;
+  const D ex = px - hiX, ey = py - hiY;
   dx = ex > dx ? ex : dx;
   dy = ey > dy ? ey : dy;
   return dx * dx + dy * dy;
 }
 
-/// The closest point of a river curve per lane: segments whose box, or whose run's box, is no
-/// closer than the best hit so far are skipped (per lane, as one point alone would skip them),
-/// and the search starts bounded by the river's radius (w = 0 beyond).
-[[gnu::always_inline]] inline void curveKernel(const CurveLaneArgs& a) noexcept {
-  const Doubles px = load(a.xs), py = load(a.ys);
-  LaneMask active;
-  __builtin_memcpy(&active, a.active, sizeof active);
+/// The closest point of a river curve to each point of L: segments whose box, or whose run's
+/// box, is no closer than the best hit so far are skipped (per lane, as one point alone would
+/// skip them), and the search starts bounded by the river's radius (w = 0 beyond).
+template <class L> [[gnu::always_inline]] inline void curveKernel(const CurveLaneArgs& a) noexcept {
+  using D = typename L::D;
+  using M = typename L::M;
+  const D px = L::load(a.xs), py = L::load(a.ys);
+  const M active = L::loadMask(a.active);
   const primitives::RiverPrimitive& r = *a.river;
-  Doubles bound2 = splat(r.radius * r.radius);
-  Doubles bestDistance = splat(std::numeric_limits<double>::infinity());
-  Doubles bestElevation{}, bestAlong{};
+  D bound2 = L::splat(r.radius * r.radius);
+  D bestDistance = L::splat(std::numeric_limits<double>::infinity());
+  D bestElevation{}, bestAlong{};
   const std::size_t n = r.curve.size();
   const double last = static_cast<double>(n - 1);
-  LaneMask inRun{};
+  M inRun{};
   for (std::size_t k = 0; k + 1 < n; ++k) {
     if (k % kChunk == 0) {
       const geometry::Aabb& c = a.chunks[k / kChunk];
-      inRun = active & (boxDistance2(px, py, c.min.x, c.min.y, c.max.x, c.max.y) < bound2);
-      if (!base::anyLane(inRun)) {
+      inRun = L::both(active, boxDistance2(px, py, c.min.x, c.min.y, c.max.x, c.max.y) < bound2);
+      if (!L::any(inRun)) {
         k += kChunk - 1;
         continue;
       }
@@ -145,42 +182,42 @@ void store(double* to, Doubles d) noexcept {
     const primitives::CurvePoint& pa = r.curve[k];
     const primitives::CurvePoint& pb = r.curve[k + 1];
     const geometry::Vec2 sa = pa.position, sb = pb.position;
-    const LaneMask nearBox =
-        inRun & (boxDistance2(px, py, std::min(sa.x, sb.x), std::min(sa.y, sb.y),
-                              std::max(sa.x, sb.x), std::max(sa.y, sb.y)) < bound2);
-    if (!base::anyLane(nearBox))
+    const M nearBox =
+        L::both(inRun, boxDistance2(px, py, std::min(sa.x, sb.x), std::min(sa.y, sb.y),
+                                    std::max(sa.x, sb.x), std::max(sa.y, sb.y)) < bound2);
+    if (!L::any(nearBox))
       continue;
     // geometry::closestPointOnSegment, lane by lane.
     const geometry::Vec2 ab = sb - sa;
     const double len2 = lengthSquared(ab);
-    Doubles qx = splat(sa.x), qy = splat(sa.y);
+    D qx = L::splat(sa.x), qy = L::splat(sa.y);
     if (len2 != 0.0) {
-      Doubles t = ((px - sa.x) * ab.x + (py - sa.y) * ab.y) / len2;
-      const Doubles zero{}, one = splat(1.0);
+      D t = ((px - sa.x) * ab.x + (py - sa.y) * ab.y) / len2;
+      const D zero{}, one = L::splat(1.0);
       t = t < zero ? zero : t;
       t = one < t ? one : t;
       qx = sa.x + ab.x * t;
       qy = sa.y + ab.y * t;
     }
-    const Doubles ex = px - qx, ey = py - qy;
-    const Doubles d2 = ex * ex + ey * ey;
-    const LaneMask closer = nearBox & (d2 < bound2);
-    if (!base::anyLane(closer))
+    const D ex = px - qx, ey = py - qy;
+    const D d2 = ex * ex + ey * ey;
+    const M closer = L::both(nearBox, d2 < bound2);
+    if (!L::any(closer))
       continue;
     bound2 = closer ? d2 : bound2;
     const double span = distance(sa, sb);
-    Doubles along{};
+    D along{};
     if (span > 0.0) {
-      const Doubles fx = sa.x - qx, fy = sa.y - qy;
-      along = sqrtLanes(fx * fx + fy * fy) / span;
+      const D fx = sa.x - qx, fy = sa.y - qy;
+      along = L::sqrt(fx * fx + fy * fy) / span;
     }
-    bestDistance = closer ? sqrtLanes(d2) : bestDistance;
+    bestDistance = closer ? L::sqrt(d2) : bestDistance;
     bestElevation = closer ? pa.elevation + (pb.elevation - pa.elevation) * along : bestElevation;
     bestAlong = closer ? (static_cast<double>(k) + along) / last : bestAlong;
   }
-  store(a.distance, bestDistance);
-  store(a.elevation, bestElevation);
-  store(a.along, bestAlong);
+  L::store(a.distance, bestDistance);
+  L::store(a.elevation, bestElevation);
+  L::store(a.along, bestAlong);
 }
 
 /// A kernel compiled for one instruction set: the baseline (SSE2), AVX2 and AVX-512F.
@@ -232,11 +269,19 @@ void runCompiled(const Args& args) noexcept {
 }
 
 void closestOnCurveLanes(const CurveLaneArgs& args) noexcept {
-  runCompiled<CurveLaneArgs, curveKernel>(args);
+  runCompiled<CurveLaneArgs, curveKernel<Wide>>(args);
+}
+
+void closestOnCurvePoint(const CurveLaneArgs& args) noexcept {
+  curveKernel<Single>(args);
 }
 
 void terrainLanes(const TerrainLaneArgs& args) noexcept {
-  runCompiled<TerrainLaneArgs, terrainKernel>(args);
+  runCompiled<TerrainLaneArgs, terrainKernel<Wide>>(args);
+}
+
+void terrainPoint(const TerrainLaneArgs& args) noexcept {
+  terrainKernel<Single>(args);
 }
 
 } // namespace detail

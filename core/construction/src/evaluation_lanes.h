@@ -31,6 +31,9 @@ struct TerrainLaneArgs {
 
 /// The terrain blend compiled for the instruction set in use (same bits on each).
 void terrainLanes(const TerrainLaneArgs& args) noexcept;
+/// The terrain blend at one point (xs[0], ys[0]) in scalar registers, into h[0] and w[0]:
+/// the same bits as a lane of terrainLanes().
+void terrainPoint(const TerrainLaneArgs& args) noexcept;
 
 /// Segments of a river curve per chunk box (World keeps one box per run of kChunk segments).
 inline constexpr std::size_t kChunk = 8;
@@ -52,5 +55,8 @@ struct CurveLaneArgs {
 
 /// The closest-point search compiled for the instruction set in use (same bits on each).
 void closestOnCurveLanes(const CurveLaneArgs& args) noexcept;
+/// The closest-point search for one point (lane 0 of the arguments) in scalar registers: the
+/// same bits as a lane of closestOnCurveLanes().
+void closestOnCurvePoint(const CurveLaneArgs& args) noexcept;
 
 } // namespace strahler::construction::detail

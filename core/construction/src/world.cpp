@@ -70,7 +70,7 @@ World::World(WorldData data)
   }
 }
 
-void World::terrainLanes(const double* xs, const double* ys, double spacing,
+void World::terrainLanes(std::size_t lanes, const double* xs, const double* ys, double spacing,
                          std::span<const std::uint32_t> ids, double* h, double* w) const noexcept {
   // The octaves that survive the LOD fade at this spacing (they get shorter, so a prefix)
   // and their fades: each costs a division, and callers sweep rows of equal spacing, so they
@@ -87,28 +87,37 @@ void World::terrainLanes(const double* xs, const double* ys, double spacing,
     fades.active = active;
     fades.spacing = spacing;
   }
-  detail::terrainLanes({hot_.data(), ids, &fades, &noise_, xs, ys, h, w});
+  const detail::TerrainLaneArgs args{hot_.data(), ids, &fades, &noise_, xs, ys, h, w};
+  if (lanes == 1)
+    detail::terrainPoint(args);
+  else
+    detail::terrainLanes(args);
 }
 
-void World::riversLanes(const double* xs, const double* ys, std::span<const std::uint32_t> ids,
-                        Sample* out) const noexcept {
+void World::riversLanes(std::size_t lanes, const double* xs, const double* ys,
+                        std::span<const std::uint32_t> ids, Sample* out) const noexcept {
   constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
   std::array<double, kLanes> distance, elevation, along;
   std::array<std::int64_t, kLanes> active;
-  for (std::size_t l = 0; l < kLanes; ++l)
+  for (std::size_t l = 0; l < lanes; ++l)
     out[l] = {};
   for (const std::uint32_t i : ids) {
     bool any = false;
-    for (std::size_t l = 0; l < kLanes; ++l) {
+    for (std::size_t l = 0; l < lanes; ++l) {
       active[l] = riverSupport_[i].contains({xs[l], ys[l]}) ? -1 : 0;
       any = any || active[l] != 0;
     }
     if (!any)
       continue;
     const primitives::RiverPrimitive& r = data_.rivers[i];
-    detail::closestOnCurveLanes({&r, riverChunks_[i], xs, ys, active.data(), distance.data(),
-                                 elevation.data(), along.data()});
-    for (std::size_t l = 0; l < kLanes; ++l) {
+    const detail::CurveLaneArgs args{
+        &r,          riverChunks_[i], xs, ys, active.data(), distance.data(), elevation.data(),
+        along.data()};
+    if (lanes == 1)
+      detail::closestOnCurvePoint(args);
+    else
+      detail::closestOnCurveLanes(args);
+    for (std::size_t l = 0; l < lanes; ++l) {
       if (active[l] == 0)
         continue;
       const double d = distance[l];
@@ -157,15 +166,13 @@ World::Evaluation World::evaluateFrom(Vec2 p, double spacing,
                                       std::span<const std::uint32_t> terrain,
                                       std::span<const std::uint32_t> rivers,
                                       Coast coast) const noexcept {
-  std::array<double, base::kLanes> xs, ys, h, w;
-  xs.fill(p.x);
-  ys.fill(p.y);
-  std::array<Sample, base::kLanes> river;
-  terrainLanes(xs.data(), ys.data(), spacing, terrain, h.data(), w.data());
-  riversLanes(xs.data(), ys.data(), rivers, river.data());
+  double h = 0.0, w = 0.0;
+  Sample river;
+  terrainLanes(1, &p.x, &p.y, spacing, terrain, &h, &w);
+  riversLanes(1, &p.x, &p.y, rivers, &river);
   Evaluation e;
-  e.terrain = {h[0], w[0]};
-  e.rivers = river[0];
+  e.terrain = {h, w};
+  e.rivers = river;
   e.tree = replace(e.terrain, e.rivers).h;
   e.height = coast == Coast::kInland ? e.tree : shapeCoast(p, e.terrain, e.rivers, coast);
   return e;
@@ -206,8 +213,8 @@ void World::heightsFrom(std::span<const Vec2> points, double spacing,
       xs[l] = p.x;
       ys[l] = p.y;
     }
-    terrainLanes(xs.data(), ys.data(), spacing, terrain, h.data(), w.data());
-    riversLanes(xs.data(), ys.data(), rivers, river.data());
+    terrainLanes(kLanes, xs.data(), ys.data(), spacing, terrain, h.data(), w.data());
+    riversLanes(kLanes, xs.data(), ys.data(), rivers, river.data());
     for (std::size_t l = 0; l < n; ++l) {
       const Vec2 p = points[begin + l];
       const Sample t{h[l], w[l]};

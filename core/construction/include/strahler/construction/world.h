@@ -105,12 +105,13 @@ public:
   static constexpr double kMaxRoughness = 0.95;
 
 private:
-  /// Terrain blends B(T…) at base::kLanes points (xs, ys) into h, w (see terrainAt in world.cpp).
-  void terrainLanes(const double* xs, const double* ys, double spacing,
+  /// B(T…) at `lanes` points (xs, ys) into h, w: 1 (scalar code) or base::kLanes (vector
+  /// code), with the same bits either way.
+  void terrainLanes(std::size_t lanes, const double* xs, const double* ys, double spacing,
                     std::span<const std::uint32_t> ids, double* h, double* w) const noexcept;
-  /// U(R…) at base::kLanes points (xs, ys) into out[0 .. kLanes).
-  void riversLanes(const double* xs, const double* ys, std::span<const std::uint32_t> ids,
-                   Sample* out) const noexcept;
+  /// U(R…) at `lanes` points (xs, ys) into out[0 .. lanes): 1 or base::kLanes, as terrainLanes.
+  void riversLanes(std::size_t lanes, const double* xs, const double* ys,
+                   std::span<const std::uint32_t> ids, Sample* out) const noexcept;
   double shapeCoast(geometry::Vec2 p, const Sample& terrain, const Sample& rivers,
                     Coast coast) const noexcept;
 
