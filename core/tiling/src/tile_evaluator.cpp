@@ -17,7 +17,9 @@ using geometry::Vec2;
 
 /// Which of a sequence of intervals [lo[i], hi[i]] meet [a, b]: when both ends are monotone in
 /// the same direction (rows and columns of a tile, except for tiles wrapping half the globe)
-/// two binary searches find them, otherwise every index is returned (the caller tests each).
+/// they form a range, found by walking from where evenly spaced intervals would put a and b
+/// (a step or two: twice as fast as binary searches here); otherwise every index is returned
+/// (the caller tests each).
 class IntervalRun {
 public:
   IntervalRun(std::vector<double> lo, std::vector<double> hi)
@@ -25,27 +27,42 @@ public:
     increasing_ = std::is_sorted(lo_.begin(), lo_.end()) && std::is_sorted(hi_.begin(), hi_.end());
     decreasing_ =
         std::is_sorted(lo_.rbegin(), lo_.rend()) && std::is_sorted(hi_.rbegin(), hi_.rend());
+    if (lo_.size() > 1) {
+      origin_ = lo_.front();
+      const double step = (lo_.back() - lo_.front()) / static_cast<double>(lo_.size() - 1);
+      perIndex_ = step != 0.0 ? 1.0 / step : 0.0;
+    }
   }
-  /// Whether meeting() finds exactly the intervals by binary search.
+  /// Whether meeting() finds exactly the intervals that meet.
   bool monotone() const noexcept { return increasing_ || decreasing_; }
   /// [first, last) holding every i whose interval meets [a, b].
   std::pair<int, int> meeting(double a, double b) const noexcept {
-    const auto n = static_cast<int>(lo_.size());
-    auto index = [&](const std::vector<double>& v, auto&& before) {
-      return static_cast<int>(std::partition_point(v.begin(), v.end(), before) - v.begin());
-    };
     if (increasing_)
-      return {index(hi_, [&](double h) { return h < a; }),
-              index(lo_, [&](double l) { return l <= b; })};
+      return {walk(hi_, a, [&](double h) { return h < a; }),
+              walk(lo_, b, [&](double l) { return l <= b; })};
     if (decreasing_)
-      return {index(lo_, [&](double l) { return l > b; }),
-              index(hi_, [&](double h) { return h >= a; })};
-    return {0, n};
+      return {walk(lo_, b, [&](double l) { return l > b; }),
+              walk(hi_, a, [&](double h) { return h >= a; })};
+    return {0, static_cast<int>(lo_.size())};
   }
 
 private:
+  /// The partition point of v under `before`, walked to from where evenly spaced intervals
+  /// would put coordinate x (a step or two: rows and columns are nearly even).
+  template <class Before> int walk(const std::vector<double>& v, double x, Before&& before) const {
+    const auto n = static_cast<int>(v.size());
+    const double guess = (x - origin_) * perIndex_;
+    int i = guess > 0.0 ? (guess < n ? static_cast<int>(guess) : n) : 0;
+    while (i > 0 && !before(v[static_cast<std::size_t>(i - 1)]))
+      --i;
+    while (i < n && before(v[static_cast<std::size_t>(i)]))
+      ++i;
+    return i;
+  }
+
   std::vector<double> lo_, hi_;
   bool increasing_ = false, decreasing_ = false;
+  double origin_ = 0.0, perIndex_ = 0.0; // index ≈ (x − origin) · perIndex
 };
 
 /// Bins over a tile's samples in index space: a bin is `groups` runs of base::kLanes samples
