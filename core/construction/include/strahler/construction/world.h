@@ -41,7 +41,7 @@ public:
   const WorldData& data() const noexcept { return data_; }
   /// Bounding box of river primitive i's support.
   const geometry::Aabb& riverSupport(std::uint32_t i) const noexcept { return riverSupport_[i]; }
-  /// Boxes of the runs of segments of river primitive i's curve (detail::kChunk segments each).
+  /// Boxes of the runs of 8 segments of river primitive i's curve.
   std::span<const geometry::Aabb> riverChunks(std::uint32_t i) const noexcept {
     return riverChunks_[i];
   }
