@@ -77,12 +77,12 @@ HeightGrid terrain(int size, TerrainKind kind) {
 }
 
 /// Args: tile side, TerrainKind.
-void encodeFormat(benchmark::State& state, HeightmapFormat format) {
-  const HeightGrid grid =
-      terrain(static_cast<int>(state.range(0)), static_cast<TerrainKind>(state.range(1)));
+/// Times `encode` (returning a Result of bytes) over the benchmark's iterations and reports the
+/// encoded size, or skips with the encoder's error.
+template <class Encode> void measureEncoding(benchmark::State& state, Encode&& encode) {
   std::size_t bytes = 0;
   for (auto _ : state) {
-    auto encoded = strahler::encoding::encodeHeightmap(grid, format);
+    auto encoded = encode();
     if (!encoded.ok()) {
       state.SkipWithError(encoded.error().message.c_str());
       return;
@@ -91,6 +91,12 @@ void encodeFormat(benchmark::State& state, HeightmapFormat format) {
     benchmark::DoNotOptimize(encoded);
   }
   state.counters["bytes"] = static_cast<double>(bytes);
+}
+
+void encodeFormat(benchmark::State& state, HeightmapFormat format) {
+  const HeightGrid grid =
+      terrain(static_cast<int>(state.range(0)), static_cast<TerrainKind>(state.range(1)));
+  measureEncoding(state, [&] { return strahler::encoding::encodeHeightmap(grid, format); });
 }
 
 void formatArgs(benchmark::internal::Benchmark* bench) {
@@ -127,17 +133,8 @@ void pngSettings(benchmark::State& state) {
                                    static_cast<detail::PngFilter>(state.range(2)),
                                    static_cast<detail::ZlibStrategy>(state.range(3))};
   const auto& tile = samples[state.range(0)];
-  std::size_t bytes = 0;
-  for (auto _ : state) {
-    auto encoded = detail::encodePng(tile, 256, 256, detail::PngLayout::kRgb8, options);
-    if (!encoded.ok()) {
-      state.SkipWithError(encoded.error().message.c_str());
-      return;
-    }
-    bytes = encoded.value().size();
-    benchmark::DoNotOptimize(encoded);
-  }
-  state.counters["bytes"] = static_cast<double>(bytes);
+  measureEncoding(
+      state, [&] { return detail::encodePng(tile, 256, 256, detail::PngLayout::kRgb8, options); });
 }
 
 /// Per terrain kind: every level 1..6 with every filter under zlib's default strategy, then

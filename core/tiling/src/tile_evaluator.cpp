@@ -74,14 +74,15 @@ public:
   /// Bins over `grid`; no primitive reaches outside `reach` (used when rows or columns are not
   /// monotone in the local frame: tiles spanning half the globe).
   Bins(const SampleGrid& grid, int groups, int rows, const Aabb& reach)
-      : width_(static_cast<std::size_t>(grid.width)), groups_(groups), rows_(rows) {
+      : groups_(groups), rows_(rows) {
+    const auto width = static_cast<std::size_t>(grid.width);
     const int runs = (grid.width + base::kLanes - 1) / base::kLanes;
     nx_ = (runs + groups - 1) / groups;
     ny_ = (grid.height + rows - 1) / rows;
     boxes_.resize(count());
     for (int r = 0; r < grid.height; ++r)
       for (int c = 0; c < grid.width; ++c)
-        boxes_[binOf(r, c)].add(grid.points[static_cast<std::size_t>(r) * width_ + c]);
+        boxes_[binOf(r, c)].add(grid.points[static_cast<std::size_t>(r) * width + c]);
     std::vector<double> colLo(nx_, kInf), colHi(nx_, -kInf), rowLo(ny_, kInf), rowHi(ny_, -kInf);
     for (int j = 0; j < ny_; ++j)
       for (int i = 0; i < nx_; ++i) {
@@ -163,7 +164,6 @@ private:
     pairs = {};
   }
 
-  std::size_t width_;
   int groups_, rows_, nx_ = 0, ny_ = 0;
   std::vector<Aabb> boxes_;
   std::optional<IntervalRun> columns_, rows_run_;
@@ -232,14 +232,10 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
   const auto [groups, rows] = binShape(grid);
   TileStats local;
   local.blocks = blocks.size();
-  Aabb reach;
+  Aabb reach; // holds the support of every primitive gathered
   for (std::uint32_t b : blocks) {
     const construction::BlockPrimitives& r = data.blocks[b];
-    for (std::uint32_t i = r.terrainBegin; i < r.terrainEnd; ++i)
-      reach.add(
-          Aabb{data.terrain[i].center, data.terrain[i].center}.expanded(data.terrain[i].radius));
-    for (std::uint32_t i = r.riverBegin; i < r.riverEnd; ++i)
-      reach.add(world_.riverSupport(i));
+    reach.add(blocks_.influence(b));
     local.terrainPrimitives += r.terrainEnd - r.terrainBegin;
     local.riverPrimitives += r.riverEnd - r.riverBegin;
   }

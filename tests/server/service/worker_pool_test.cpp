@@ -17,6 +17,21 @@ namespace {
 
 using testing::Watchdog;
 
+/// Drains `pool` on another thread while a task waits on `release`: drain must not return
+/// before the release, which this function gives after a pause.
+void drainWhileHeld(WorkerPool& pool, std::latch& release) {
+  std::atomic<bool> drained{false};
+  std::jthread drainer([&] {
+    pool.drain();
+    drained = true;
+  });
+  std::this_thread::sleep_for(
+      std::chrono::milliseconds(20)); // Give drain a chance to return early.
+  EXPECT_FALSE(drained.load());
+  release.count_down();
+  drainer.join();
+}
+
 TEST(WorkerPool, RunsTasksConcurrentlyOnItsThreads) {
   constexpr int kThreads = 4;
   Watchdog watchdog("tasks on 4 threads");
@@ -99,16 +114,7 @@ TEST(WorkerPool, DrainWaitsForQueuedAndRunningTasks) {
     ASSERT_TRUE(pool.submit([&] { ++finished; }));
   }
   started.wait();
-  std::atomic<bool> drained{false};
-  std::jthread drainer([&] {
-    pool.drain();
-    drained = true;
-  });
-  std::this_thread::sleep_for(
-      std::chrono::milliseconds(20)); // Give drain a chance to return early.
-  EXPECT_FALSE(drained.load());
-  release.count_down();
-  drainer.join();
+  drainWhileHeld(pool, release);
   EXPECT_EQ(finished.load(), 6);
 }
 
@@ -124,16 +130,7 @@ TEST(WorkerPool, DrainWaitsForTheRunningTaskWhenNothingIsQueued) {
     finished = true;
   }));
   started.wait();
-  std::atomic<bool> drained{false};
-  std::jthread drainer([&] {
-    pool.drain();
-    drained = true;
-  });
-  std::this_thread::sleep_for(
-      std::chrono::milliseconds(20)); // Give drain a chance to return early.
-  EXPECT_FALSE(drained.load());
-  release.count_down();
-  drainer.join();
+  drainWhileHeld(pool, release);
   EXPECT_TRUE(finished.load());
 }
 
