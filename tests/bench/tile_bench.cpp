@@ -61,10 +61,11 @@ void BM_TileWholeWorld(benchmark::State& state) {
 void BM_TileAllPrimitives(benchmark::State& state) {
   const Fixture& f = fixture();
   const tiling::SampleGrid grid = f.web.rasterGrid(tileAt(static_cast<int>(state.range(0))), 16);
-  std::vector<std::uint32_t> terrain(f.world.data().terrain.size()),
-      rivers(f.world.data().rivers.size());
+  std::vector<std::uint32_t> terrain(f.world.data().terrain.size());
   std::iota(terrain.begin(), terrain.end(), 0u);
-  std::iota(rivers.begin(), rivers.end(), 0u);
+  std::vector<construction::World::RiverCandidate> rivers;
+  for (std::uint32_t i = 0; i < f.world.data().rivers.size(); ++i)
+    rivers.push_back(f.world.wholeRiver(i));
   for (auto _ : state)
     for (std::size_t k = 0; k < grid.points.size(); ++k)
       benchmark::DoNotOptimize(

@@ -51,6 +51,13 @@ struct Wide {
       v[l] = __builtin_sqrt(v[l]);
     return v;
   }
+  /// The box of the points (x[l], y[l]).
+  [[gnu::always_inline]] static geometry::Aabb bounds(D x, D y) noexcept {
+    geometry::Aabb box;
+    for (int l = 0; l < kLanes; ++l)
+      box.add(geometry::Vec2{x[l], y[l]});
+    return box;
+  }
   [[gnu::always_inline]] static bool allBelow(D x, D y, double limit) noexcept {
     bool below = true;
     for (int l = 0; l < kLanes; ++l)
@@ -80,6 +87,9 @@ struct Single {
   [[gnu::always_inline]] static bool any(M m) noexcept { return m; }
   [[gnu::always_inline]] static M both(M a, M b) noexcept { return a && b; }
   [[gnu::always_inline]] static D sqrt(D v) noexcept { return __builtin_sqrt(v); }
+  [[gnu::always_inline]] static geometry::Aabb bounds(D x, D y) noexcept {
+    return {{x, y}, {x, y}};
+  }
   [[gnu::always_inline]] static bool allBelow(D x, D y, double limit) noexcept {
     return std::fabs(x) < limit && std::fabs(y) < limit;
   }
@@ -88,12 +98,10 @@ struct Single {
   }
 };
 
-/// B(T…) at the points of L (Wide or Single): Σ w_i c_i / Σ w_i plus the fBm of the blended
-/// amplitude A and gain G, octave k weighted by A (1 − G) / (1 − G^K) · G^k times its LOD
-/// fade, octaves below kNegligibleAmplitude left out. Points without any covering primitive
-/// get {0, 0}.
+/// The weighted sums of the terrain blend at the points of L (Wide or Single): Σ w_i,
+/// Σ w_i c_i, Σ w_i A_i, Σ w_i G_i and the number of covering primitives, into a.sums.
 template <class L>
-[[gnu::always_inline]] inline void terrainKernel(const TerrainLaneArgs& a) noexcept {
+[[gnu::always_inline]] inline void terrainSumsKernel(const TerrainLaneArgs& a) noexcept {
   using D = typename L::D;
   using M = typename L::M;
   const D px = L::load(a.xs), py = L::load(a.ys);
@@ -112,18 +120,35 @@ template <class L>
     weightedRoughness += w * t.roughness;
     count += inside ? L::splat(1.0) : D{};
   }
+  L::store(a.sums->weight, weight);
+  L::store(a.sums->height, weightedHeight);
+  L::store(a.sums->amplitude, weightedAmplitude);
+  L::store(a.sums->roughness, weightedRoughness);
+  L::store(a.sums->count, count);
+}
+
+/// B(T…) at the points of L from their sums (terrainSumsKernel): Σ w_i c_i / Σ w_i plus the
+/// fBm of the blended amplitude A and gain G, octave k weighted by A (1 − G) / (1 − G^K) · G^k
+/// times its LOD fade, octaves below kNegligibleAmplitude left out. Points without any
+/// covering primitive get {0, 0}.
+template <class L>
+[[gnu::always_inline]] inline void terrainNoiseKernel(const TerrainLaneArgs& a) noexcept {
+  using D = typename L::D;
+  using M = typename L::M;
+  const D weight = L::load(a.sums->weight);
   const M covered = weight > 0.0;
   if (!L::any(covered)) {
     L::store(a.h, D{});
     L::store(a.w, D{});
     return;
   }
+  const D px = L::load(a.xs), py = L::load(a.ys);
   const D perWeight = 1.0 / weight;
-  const D gain = weightedRoughness * perWeight;
+  const D gain = L::load(a.sums->roughness) * perWeight;
   D gainPower = L::splat(1.0);
   for (int k = 0; k < NoiseOctaves::kOctaves; ++k)
     gainPower *= gain;
-  D amplitude = weightedAmplitude * perWeight * (1.0 - gain) / (1.0 - gainPower);
+  D amplitude = L::load(a.sums->amplitude) * perWeight * (1.0 - gain) / (1.0 - gainPower);
   const bool lanesSafe = L::allBelow(px, py, kLaneSafe);
   D noise{};
   double inverse = 1.0 / NoiseOctaves::kLongest; // wavelengths are powers of two: exact
@@ -137,8 +162,15 @@ template <class L>
     noise = present ? noise + coefficient * value : noise;
     amplitude *= gain;
   }
-  L::store(a.h, covered ? weightedHeight / weight + noise : D{});
-  L::store(a.w, covered ? weight / count : D{});
+  L::store(a.h, covered ? L::load(a.sums->height) / weight + noise : D{});
+  L::store(a.w, covered ? weight / L::load(a.sums->count) : D{});
+}
+
+/// Both phases at one point, in scalar registers.
+template <class L>
+[[gnu::always_inline]] inline void terrainKernel(const TerrainLaneArgs& a) noexcept {
+  terrainSumsKernel<L>(a);
+  terrainNoiseKernel<L>(a);
 }
 
 /// Squared distance from each point to the box [lo, hi] (0 inside).
@@ -155,24 +187,48 @@ template <class D>
   return dx * dx + dy * dy;
 }
 
-/// The closest point of a river curve to each point of L: segments whose box, or whose run's
-/// box, is no closer than the best hit so far are skipped (per lane, as one point alone would
-/// skip them), and the search starts bounded by the river's radius (w = 0 beyond).
-template <class L> [[gnu::always_inline]] inline void curveKernel(const CurveLaneArgs& a) noexcept {
+/// Squared gap between boxes a and [lo, hi], never more than boxDistance2() from any point of
+/// a to [lo, hi] (rounding is monotone): a gap ≥ a bound rules out every point of a at once.
+[[gnu::always_inline]] inline double boxGap2(const geometry::Aabb& a, double loX, double loY,
+                                             double hiX, double hiY) noexcept {
+  const double dx = std::max({loX - a.max.x, 0.0, a.min.x - hiX});
+  const double dy = std::max({loY - a.max.y, 0.0, a.min.y - hiY});
+  return dx * dx + dy * dy;
+}
+
+/// The closest point of a river curve to each point of L inside the river's support box,
+/// over the runs [firstChunk, chunks.size()): segments whose box, or whose run's box, is no
+/// closer than the best hit so far are skipped (per lane, as one point alone would skip them),
+/// and the search starts bounded by the river's radius (w = 0 beyond). Returns whether any
+/// point found a segment within the radius.
+template <class L> [[gnu::always_inline]] inline bool curveKernel(const CurveLaneArgs& a) noexcept {
   using D = typename L::D;
   using M = typename L::M;
   const D px = L::load(a.xs), py = L::load(a.ys);
-  const M active = L::loadMask(a.active);
+  const geometry::Aabb& s = a.support;
+  const M active =
+      L::both(L::both(px >= s.min.x, px <= s.max.x), L::both(py >= s.min.y, py <= s.max.y));
   const primitives::RiverPrimitive& r = *a.river;
   D bound2 = L::splat(r.radius * r.radius);
   D bestDistance = L::splat(std::numeric_limits<double>::infinity());
   D bestElevation{}, bestAlong{};
-  const std::size_t n = r.curve.size();
-  const double last = static_cast<double>(n - 1);
-  M inRun{};
-  for (std::size_t k = 0; k + 1 < n; ++k) {
+  if (!L::any(active)) {
+    L::store(a.distance, bestDistance);
+    return false;
+  }
+  const std::size_t n = std::min(r.curve.size(), a.chunks.size() * kChunk + 1);
+  const double last = static_cast<double>(r.curve.size() - 1);
+  // Runs and segments out of the radius of the points' box are skipped in scalar code first.
+  const geometry::Aabb points = L::bounds(px, py);
+  const double radius2 = r.radius * r.radius;
+  M inRun{}, found{};
+  for (std::size_t k = a.firstChunk * kChunk; k + 1 < n; ++k) {
     if (k % kChunk == 0) {
       const geometry::Aabb& c = a.chunks[k / kChunk];
+      if (boxGap2(points, c.min.x, c.min.y, c.max.x, c.max.y) >= radius2) {
+        k += kChunk - 1;
+        continue;
+      }
       inRun = L::both(active, boxDistance2(px, py, c.min.x, c.min.y, c.max.x, c.max.y) < bound2);
       if (!L::any(inRun)) {
         k += kChunk - 1;
@@ -182,9 +238,11 @@ template <class L> [[gnu::always_inline]] inline void curveKernel(const CurveLan
     const primitives::CurvePoint& pa = r.curve[k];
     const primitives::CurvePoint& pb = r.curve[k + 1];
     const geometry::Vec2 sa = pa.position, sb = pb.position;
-    const M nearBox =
-        L::both(inRun, boxDistance2(px, py, std::min(sa.x, sb.x), std::min(sa.y, sb.y),
-                                    std::max(sa.x, sb.x), std::max(sa.y, sb.y)) < bound2);
+    const double loX = std::min(sa.x, sb.x), loY = std::min(sa.y, sb.y);
+    const double hiX = std::max(sa.x, sb.x), hiY = std::max(sa.y, sb.y);
+    if (boxGap2(points, loX, loY, hiX, hiY) >= radius2)
+      continue;
+    const M nearBox = L::both(inRun, boxDistance2(px, py, loX, loY, hiX, hiY) < bound2);
     if (!L::any(nearBox))
       continue;
     // geometry::closestPointOnSegment, lane by lane.
@@ -205,6 +263,7 @@ template <class L> [[gnu::always_inline]] inline void curveKernel(const CurveLan
     if (!L::any(closer))
       continue;
     bound2 = closer ? d2 : bound2;
+    found = found | closer;
     const double span = distance(sa, sb);
     D along{};
     if (span > 0.0) {
@@ -218,13 +277,41 @@ template <class L> [[gnu::always_inline]] inline void curveKernel(const CurveLan
   L::store(a.distance, bestDistance);
   L::store(a.elevation, bestElevation);
   L::store(a.along, bestAlong);
+  return L::any(found);
+}
+
+/// The squared distance from each point of L to the nearest of a.ids (see SegmentLaneArgs).
+template <class L>
+[[gnu::always_inline]] inline void nearestSegmentKernel(const SegmentLaneArgs& a) noexcept {
+  using D = typename L::D;
+  const D px = L::load(a.xs), py = L::load(a.ys);
+  D best2 = L::load(a.best2);
+  for (const std::uint32_t i : a.ids) {
+    const geometry::Vec2 sa = a.segments[i].a, sb = a.segments[i].b;
+    // geometry::closestPointOnSegment, lane by lane.
+    const geometry::Vec2 ab = sb - sa;
+    const double len2 = lengthSquared(ab);
+    D qx = L::splat(sa.x), qy = L::splat(sa.y);
+    if (len2 != 0.0) {
+      D t = ((px - sa.x) * ab.x + (py - sa.y) * ab.y) / len2;
+      const D zero{}, one = L::splat(1.0);
+      t = t < zero ? zero : t;
+      t = one < t ? one : t;
+      qx = sa.x + ab.x * t;
+      qy = sa.y + ab.y * t;
+    }
+    const D ex = qx - px, ey = qy - py;
+    const D d2 = ex * ex + ey * ey;
+    best2 = d2 < best2 ? d2 : best2;
+  }
+  L::store(a.best2, best2);
 }
 
 /// A kernel compiled for one instruction set: the baseline (SSE2), AVX2 and AVX-512F.
-template <class Args, void (*kKernel)(const Args&) noexcept> struct Compiled {
-  static void baseline(const Args& a) noexcept { kKernel(a); }
-  __attribute__((target("avx2"))) static void avx2(const Args& a) noexcept { kKernel(a); }
-  __attribute__((target("avx512f"))) static void avx512(const Args& a) noexcept { kKernel(a); }
+template <class R, class Args, R (*kKernel)(const Args&) noexcept> struct Compiled {
+  static R baseline(const Args& a) noexcept { return kKernel(a); }
+  __attribute__((target("avx2"))) static R avx2(const Args& a) noexcept { return kKernel(a); }
+  __attribute__((target("avx512f"))) static R avx512(const Args& a) noexcept { return kKernel(a); }
 };
 
 bool supported(InstructionSet set) noexcept {
@@ -254,9 +341,9 @@ std::atomic<InstructionSet>& current() noexcept {
 } // namespace
 
 /// Runs the build of `kKernel` for the instruction set in use.
-template <class Args, void (*kKernel)(const Args&) noexcept>
-void runCompiled(const Args& args) noexcept {
-  using Builds = Compiled<Args, kKernel>;
+template <class R, class Args, R (*kKernel)(const Args&) noexcept>
+R runCompiled(const Args& args) noexcept {
+  using Builds = Compiled<R, Args, kKernel>;
   switch (current().load(std::memory_order_relaxed)) {
   case InstructionSet::kAvx512:
     return Builds::avx512(args);
@@ -265,23 +352,30 @@ void runCompiled(const Args& args) noexcept {
   case InstructionSet::kBaseline:
     break;
   }
-  Builds::baseline(args);
+  return Builds::baseline(args);
 }
 
-void closestOnCurveLanes(const CurveLaneArgs& args) noexcept {
-  runCompiled<CurveLaneArgs, curveKernel<Wide>>(args);
+bool closestOnCurveLanes(const CurveLaneArgs& args) noexcept {
+  return runCompiled<bool, CurveLaneArgs, curveKernel<Wide>>(args);
 }
 
-void closestOnCurvePoint(const CurveLaneArgs& args) noexcept {
-  curveKernel<Single>(args);
+bool closestOnCurvePoint(const CurveLaneArgs& args) noexcept {
+  return curveKernel<Single>(args);
 }
 
 void terrainLanes(const TerrainLaneArgs& args) noexcept {
-  runCompiled<TerrainLaneArgs, terrainKernel<Wide>>(args);
+  // Two builds, not one: in a single function GCC keeps the sums' accumulators on the stack
+  // (the noise needs many registers), and every candidate then waits on a store.
+  runCompiled<void, TerrainLaneArgs, terrainSumsKernel<Wide>>(args);
+  runCompiled<void, TerrainLaneArgs, terrainNoiseKernel<Wide>>(args);
 }
 
 void terrainPoint(const TerrainLaneArgs& args) noexcept {
   terrainKernel<Single>(args);
+}
+
+void nearestSegmentLanes(const SegmentLaneArgs& args) noexcept {
+  runCompiled<void, SegmentLaneArgs, nearestSegmentKernel<Wide>>(args);
 }
 
 } // namespace detail

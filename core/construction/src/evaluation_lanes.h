@@ -1,5 +1,6 @@
 #pragma once
 
+#include "strahler/base/lanes.h"
 #include "strahler/construction/world.h"
 
 #include <array>
@@ -16,6 +17,15 @@ struct OctaveFades {
   std::array<double, NoiseOctaves::kOctaves> fade{};
 };
 
+/// The weighted sums of the terrain blend, base::kLanes each.
+struct TerrainSums {
+  alignas(64) double weight[base::kLanes];
+  alignas(64) double height[base::kLanes];
+  alignas(64) double amplitude[base::kLanes];
+  alignas(64) double roughness[base::kLanes];
+  alignas(64) double count[base::kLanes];
+};
+
 /// One call of the terrain blend: base::kLanes points (xs, ys) and their shared candidates;
 /// results go to h and w (kLanes each).
 struct TerrainLaneArgs {
@@ -27,6 +37,7 @@ struct TerrainLaneArgs {
   const double* ys = nullptr;
   double* h = nullptr;
   double* w = nullptr;
+  TerrainSums* sums = nullptr; ///< scratch for the sums
 };
 
 /// The terrain blend compiled for the instruction set in use (same bits on each).
@@ -38,25 +49,43 @@ void terrainPoint(const TerrainLaneArgs& args) noexcept;
 /// Segments of a river curve per chunk box (World keeps one box per run of kChunk segments).
 inline constexpr std::size_t kChunk = 8;
 
-/// One closest-point search on a river curve for base::kLanes points (xs, ys); lanes with
-/// active[l] == 0 are not searched. Results per lane: the distance to the curve (infinity when
-/// not searched or farther than the river's radius), the water elevation there and the
-/// fraction along the curve (0 upstream .. 1 downstream).
+/// One closest-point search on a river curve for base::kLanes points (xs, ys); points outside
+/// the support box are not searched, nor runs of the curve before firstChunk or after the
+/// chunks given. Results per lane: the distance to the curve (infinity when not searched or
+/// farther than the river's radius), the water elevation there and the fraction along the
+/// curve (0 upstream .. 1 downstream).
 struct CurveLaneArgs {
   const primitives::RiverPrimitive* river = nullptr;
-  std::span<const geometry::Aabb> chunks; ///< the box of each run of kChunk segments
+  geometry::Aabb support; ///< the river's support box
+  std::span<const geometry::Aabb>
+      chunks; ///< the box of each run of kChunk segments, up to the last run searched
+  std::size_t firstChunk = 0; ///< the first run searched
   const double* xs = nullptr;
   const double* ys = nullptr;
-  const std::int64_t* active = nullptr;
   double* distance = nullptr;
   double* elevation = nullptr;
   double* along = nullptr;
 };
 
-/// The closest-point search compiled for the instruction set in use (same bits on each).
-void closestOnCurveLanes(const CurveLaneArgs& args) noexcept;
+/// The closest-point search compiled for the instruction set in use (same bits on each);
+/// returns whether any point came within the river's radius.
+bool closestOnCurveLanes(const CurveLaneArgs& args) noexcept;
 /// The closest-point search for one point (lane 0 of the arguments) in scalar registers: the
 /// same bits as a lane of closestOnCurveLanes().
-void closestOnCurvePoint(const CurveLaneArgs& args) noexcept;
+bool closestOnCurvePoint(const CurveLaneArgs& args) noexcept;
+
+/// One nearest-segment search for base::kLanes points (xs, ys) over the segments `ids` of
+/// `segments`: best2[l] becomes the least of itself and each segment's squared distance, as
+/// geometry::closestPointOnSegment and lengthSquared compute it.
+struct SegmentLaneArgs {
+  const geometry::BoundarySegment* segments = nullptr;
+  std::span<const std::uint32_t> ids;
+  const double* xs = nullptr;
+  const double* ys = nullptr;
+  double* best2 = nullptr;
+};
+
+/// The nearest-segment search compiled for the instruction set in use (same bits on each).
+void nearestSegmentLanes(const SegmentLaneArgs& args) noexcept;
 
 } // namespace strahler::construction::detail

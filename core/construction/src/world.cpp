@@ -68,6 +68,28 @@ World::World(WorldData data)
     riverChunks_.push_back(std::move(chunks));
     riverGrid_.insert(riverSupport_.back(), i);
   }
+  riverCells_.resize(riverGrid_.cellCount());
+  for (std::size_t c = 0; c < riverGrid_.cellCount(); ++c) {
+    // Points land in a cell by a rounded division: a little slack around its box.
+    const geometry::Aabb box = riverGrid_.cellBox(c).expanded(1e-6 * riverGrid_.cellSize());
+    for (const std::uint32_t i : riverGrid_.cell(c)) {
+      const std::span<const geometry::Aabb> chunks = riverChunks_[i];
+      const geometry::Aabb near = box.expanded(riverReach(i));
+      RiverCandidate candidate{i, 0, 0};
+      for (std::uint32_t k = 0; k < chunks.size(); ++k)
+        if (chunks[k].intersects(near)) {
+          if (candidate.endChunk == 0)
+            candidate.firstChunk = k;
+          candidate.endChunk = k + 1;
+        }
+      if (candidate.endChunk > 0) // otherwise no point of the cell is within the radius
+        riverCells_[c].push_back(candidate);
+    }
+  }
+}
+
+double World::riverReach(std::uint32_t i) const noexcept {
+  return data_.rivers[i].radius * (1.0 + 1e-9) + 1e-6;
 }
 
 void World::terrainLanes(std::size_t lanes, const double* xs, const double* ys, double spacing,
@@ -87,7 +109,8 @@ void World::terrainLanes(std::size_t lanes, const double* xs, const double* ys, 
     fades.active = active;
     fades.spacing = spacing;
   }
-  const detail::TerrainLaneArgs args{hot_.data(), ids, &fades, &noise_, xs, ys, h, w};
+  detail::TerrainSums sums;
+  const detail::TerrainLaneArgs args{hot_.data(), ids, &fades, &noise_, xs, ys, h, w, &sums};
   if (lanes == 1)
     detail::terrainPoint(args);
   else
@@ -95,32 +118,29 @@ void World::terrainLanes(std::size_t lanes, const double* xs, const double* ys, 
 }
 
 void World::riversLanes(std::size_t lanes, const double* xs, const double* ys,
-                        std::span<const std::uint32_t> ids, Sample* out) const noexcept {
+                        std::span<const RiverCandidate> rivers, Sample* out) const noexcept {
   constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
   std::array<double, kLanes> distance, elevation, along;
-  std::array<std::int64_t, kLanes> active;
   for (std::size_t l = 0; l < lanes; ++l)
     out[l] = {};
-  for (const std::uint32_t i : ids) {
-    bool any = false;
-    for (std::size_t l = 0; l < lanes; ++l) {
-      active[l] = riverSupport_[i].contains({xs[l], ys[l]}) ? -1 : 0;
-      any = any || active[l] != 0;
-    }
-    if (!any)
-      continue;
+  for (const RiverCandidate& c : rivers) {
+    const std::uint32_t i = c.id;
     const primitives::RiverPrimitive& r = data_.rivers[i];
-    const detail::CurveLaneArgs args{
-        &r,          riverChunks_[i], xs, ys, active.data(), distance.data(), elevation.data(),
-        along.data()};
-    if (lanes == 1)
-      detail::closestOnCurvePoint(args);
-    else
-      detail::closestOnCurveLanes(args);
+    const detail::CurveLaneArgs args{&r,
+                                     riverSupport_[i],
+                                     std::span(riverChunks_[i]).subspan(0, c.endChunk),
+                                     c.firstChunk,
+                                     xs,
+                                     ys,
+                                     distance.data(),
+                                     elevation.data(),
+                                     along.data()};
+    if (lanes == 1 ? !detail::closestOnCurvePoint(args) : !detail::closestOnCurveLanes(args))
+      continue; // no point within the river's radius
     for (std::size_t l = 0; l < lanes; ++l) {
-      if (active[l] == 0)
-        continue;
       const double d = distance[l];
+      if (!(d < r.radius))
+        continue; // not searched, or w = 0
       const double w = primitives::falloff(d * d, r.radius * r.radius);
       if (w <= 0.0)
         continue;
@@ -138,11 +158,22 @@ double World::shelfReach() noexcept {
 
 double World::shapeCoast(Vec2 p, const Sample& terrain, const Sample& rivers,
                          Coast coast) const noexcept {
+  if (coast == Coast::kInland)
+    return replace(terrain, rivers).h;
+  if (coast == Coast::kFarSea)
+    return shapeCoast(terrain, rivers, false, kShelfReach);
+  const bool onLand = land_.contains(p);
+  return shapeCoast(terrain, rivers, onLand,
+                    land_.distanceToBoundary(p, onLand ? CoastShape::kBand : kShelfReach));
+}
+
+double World::shapeCoast(const Sample& terrain, const Sample& rivers, bool onLand,
+                         double shore) noexcept {
   // Rivers keep their own bed (monotone downstream); only the terrain gets the beach ramp.
   // Both are capped by a surface that is 0 at the shore, so land and sea meet at 0 m,
   // river mouths included.
-  if (coast != Coast::kFarSea && land_.contains(p)) {
-    const double d = land_.distanceToBoundary(p, CoastShape::kBand);
+  if (onLand) {
+    const double d = shore;
     if (d >= CoastShape::kBand)
       return replace(terrain, rivers).h;
     const double t = smoothstep(d / CoastShape::kBand);
@@ -153,18 +184,18 @@ double World::shapeCoast(Vec2 p, const Sample& terrain, const Sample& rivers,
     const double cap = d * (1.0 + 10.0 * t * t);
     return replace(shaped, {std::min(rivers.h, cap), rivers.w}).h;
   }
-  const double d = coast == Coast::kFarSea ? kShelfReach : land_.distanceToBoundary(p, kShelfReach);
+  const double d = shore;
   const double sea = -CoastShape::kShelfDepth * (1.0 - std::exp(-d / CoastShape::kShelfWidth));
   return replace({sea, 1.0}, {std::min(rivers.h, sea), rivers.w}).h;
 }
 
 World::Evaluation World::evaluate(Vec2 p, double spacing) const noexcept {
-  return evaluateFrom(p, spacing, terrainGrid_.cellAt(p), riverGrid_.cellAt(p));
+  return evaluateFrom(p, spacing, terrainGrid_.cellAt(p), riverCells_[riverGrid_.cellIndexAt(p)]);
 }
 
 World::Evaluation World::evaluateFrom(Vec2 p, double spacing,
                                       std::span<const std::uint32_t> terrain,
-                                      std::span<const std::uint32_t> rivers,
+                                      std::span<const RiverCandidate> rivers,
                                       Coast coast) const noexcept {
   double h = 0.0, w = 0.0;
   Sample river;
@@ -174,7 +205,7 @@ World::Evaluation World::evaluateFrom(Vec2 p, double spacing,
   e.terrain = {h, w};
   e.rivers = river;
   e.tree = replace(e.terrain, e.rivers).h;
-  e.height = coast == Coast::kInland ? e.tree : shapeCoast(p, e.terrain, e.rivers, coast);
+  e.height = shapeCoast(p, e.terrain, e.rivers, coast);
   return e;
 }
 
@@ -185,13 +216,13 @@ void World::heights(std::span<const Vec2> points, double spacing,
     const std::span<const Vec2> group =
         points.subspan(begin, std::min(kLanes, points.size() - begin));
     const std::vector<std::uint32_t>& terrain = terrainGrid_.cellAt(group[0]);
-    const std::vector<std::uint32_t>& rivers = riverGrid_.cellAt(group[0]);
+    const std::size_t riverCell = riverGrid_.cellIndexAt(group[0]);
+    const std::vector<RiverCandidate>& rivers = riverCells_[riverCell];
     const bool shared = std::all_of(group.begin(), group.end(), [&](Vec2 p) {
-      return &terrainGrid_.cellAt(p) == &terrain && &riverGrid_.cellAt(p) == &rivers;
+      return &terrainGrid_.cellAt(p) == &terrain && riverGrid_.cellIndexAt(p) == riverCell;
     });
     if (shared) {
-      heightsFrom(group, spacing, terrain, rivers, Coast::kUnknown,
-                  out.subspan(begin, group.size()));
+      heightsFrom(group, spacing, terrain, rivers, {}, out.subspan(begin, group.size()));
       continue;
     }
     for (std::size_t l = 0; l < group.size(); ++l)
@@ -201,10 +232,10 @@ void World::heights(std::span<const Vec2> points, double spacing,
 
 void World::heightsFrom(std::span<const Vec2> points, double spacing,
                         std::span<const std::uint32_t> terrain,
-                        std::span<const std::uint32_t> rivers, Coast coast,
+                        std::span<const RiverCandidate> rivers, const Shore& shore,
                         std::span<double> heights) const noexcept {
   constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
-  std::array<double, kLanes> xs, ys, h, w;
+  std::array<double, kLanes> xs, ys, h, w, shore2;
   std::array<Sample, kLanes> river;
   for (std::size_t begin = 0; begin < points.size(); begin += kLanes) {
     const std::size_t n = std::min(kLanes, points.size() - begin);
@@ -215,11 +246,21 @@ void World::heightsFrom(std::span<const Vec2> points, double spacing,
     }
     terrainLanes(kLanes, xs.data(), ys.data(), spacing, terrain, h.data(), w.data());
     riversLanes(kLanes, xs.data(), ys.data(), rivers, river.data());
+    if (shore.coast != Coast::kUnknown || !shore.segments) {
+      for (std::size_t l = 0; l < n; ++l)
+        heights[begin + l] = shapeCoast(points[begin + l], {h[l], w[l]}, river[l], shore.coast);
+      continue;
+    }
+    // The squared distance to the nearest of the candidate segments, as the land index would
+    // find it (the same minimum of the same per-segment values), up to the shelf's reach.
+    shore2.fill(kShelfReach * kShelfReach);
+    detail::nearestSegmentLanes(
+        {land_.segments().data(), *shore.segments, xs.data(), ys.data(), shore2.data()});
     for (std::size_t l = 0; l < n; ++l) {
-      const Vec2 p = points[begin + l];
-      const Sample t{h[l], w[l]};
-      const Sample r = river[l];
-      heights[begin + l] = coast == Coast::kInland ? replace(t, r).h : shapeCoast(p, t, r, coast);
+      const bool onLand = shore.onLand ? *shore.onLand : land_.contains(points[begin + l]);
+      const double limit = onLand ? CoastShape::kBand : kShelfReach;
+      const double d = shore2[l] < limit * limit ? std::sqrt(shore2[l]) : limit;
+      heights[begin + l] = shapeCoast({h[l], w[l]}, river[l], onLand, d);
     }
   }
 }

@@ -184,6 +184,21 @@ BoundaryHit PolygonIndex::nearestBoundary(Vec2 p, double maxDistance) const noex
   return hit;
 }
 
+void PolygonIndex::segmentsMeeting(const Aabb& box, std::vector<std::uint32_t>& out) const {
+  const std::size_t first = out.size();
+  grid_.query(box, [&](std::uint32_t i) {
+    Aabb b;
+    b.add(segments_[i].a);
+    b.add(segments_[i].b);
+    if (b.intersects(box))
+      out.push_back(i);
+    return true;
+  });
+  // A segment spanning several cells is reported by each.
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+  out.erase(std::unique(out.begin() + static_cast<std::ptrdiff_t>(first), out.end()), out.end());
+}
+
 bool PolygonIndex::segmentNearBoundary(Vec2 a, Vec2 b, double clearance) const noexcept {
   Aabb box;
   box.add(a);

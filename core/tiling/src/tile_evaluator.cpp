@@ -67,8 +67,9 @@ private:
 
 /// Bins over a tile's samples in index space: a bin is `groups` runs of base::kLanes samples
 /// of a row times `rows` rows, so every run of kLanes samples lies in one bin and is evaluated
-/// in one vector pass. Each bin lists (ascending) the primitives whose support meets the box
-/// of its samples, and whether it lies wholly inland or far at sea.
+/// in one vector pass. Each bin lists (ascending) the terrain primitives whose support meets
+/// the box of its samples, and the rivers a run of whose curve comes near it, with the span
+/// of such runs.
 class Bins {
 public:
   /// Bins over `grid`; no primitive reaches outside `reach` (used when rows or columns are not
@@ -100,6 +101,7 @@ public:
           reachable_.push_back(b);
     terrainBegin_.assign(count() + 1, 0);
     riverBegin_.assign(count() + 1, 0);
+    lastRiver_.assign(count(), kNone);
   }
 
   std::size_t count() const noexcept { return static_cast<std::size_t>(nx_) * ny_; }
@@ -129,10 +131,20 @@ public:
       }
   }
 
-  /// Adds primitive `id` to the terrain (or river) list of `bin`. Lists keep the order of
-  /// addition; finish() must follow the last addition.
+  /// Adds terrain primitive `id` to the list of `bin`. Lists keep the order of addition;
+  /// finish() must follow the last addition.
   void addTerrain(std::size_t bin, std::uint32_t id) { terrainPairs_.push_back({bin, id}); }
-  void addRiver(std::size_t bin, std::uint32_t id) { riverPairs_.push_back({bin, id}); }
+  /// Adds run `chunk` of river primitive `id`'s curve to `bin`: rivers must come in ascending
+  /// order and each river's runs ascending.
+  void addRiverChunk(std::size_t bin, std::uint32_t id, std::uint32_t chunk) {
+    std::size_t& last = lastRiver_[bin];
+    if (last != kNone && riverPairs_[last].second.id == id) {
+      riverPairs_[last].second.endChunk = chunk + 1;
+      return;
+    }
+    last = riverPairs_.size();
+    riverPairs_.push_back({static_cast<std::uint32_t>(bin), {id, chunk, chunk + 1}});
+  }
   void finish() {
     sortByBin(terrainPairs_, terrainBegin_, terrain_);
     sortByBin(riverPairs_, riverBegin_, rivers_);
@@ -141,7 +153,7 @@ public:
   std::span<const std::uint32_t> terrain(std::size_t bin) const noexcept {
     return {terrain_.data() + terrainBegin_[bin], terrain_.data() + terrainBegin_[bin + 1]};
   }
-  std::span<const std::uint32_t> rivers(std::size_t bin) const noexcept {
+  std::span<const construction::World::RiverCandidate> rivers(std::size_t bin) const noexcept {
     return {rivers_.data() + riverBegin_[bin], rivers_.data() + riverBegin_[bin + 1]};
   }
   int perRow() const noexcept { return nx_; }
@@ -149,18 +161,20 @@ public:
 
 private:
   static constexpr double kInf = std::numeric_limits<double>::infinity();
-  using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>; // (bin, id)
+  static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  template <class T> using Pairs = std::vector<std::pair<std::uint32_t, T>>; // (bin, item)
 
-  /// Stable counting sort of (bin, id) pairs into per-bin lists.
-  void sortByBin(Pairs& pairs, std::vector<std::uint32_t>& begin, std::vector<std::uint32_t>& ids) {
-    for (const auto& [bin, id] : pairs)
+  /// Stable counting sort of (bin, item) pairs into per-bin lists.
+  template <class T>
+  void sortByBin(Pairs<T>& pairs, std::vector<std::uint32_t>& begin, std::vector<T>& items) {
+    for (const auto& [bin, item] : pairs)
       ++begin[bin + 1];
     for (std::size_t b = 0; b < count(); ++b)
       begin[b + 1] += begin[b];
-    ids.resize(pairs.size());
+    items.resize(pairs.size());
     std::vector<std::uint32_t> next(begin.begin(), begin.end() - 1);
-    for (const auto& [bin, id] : pairs)
-      ids[next[bin]++] = id;
+    for (const auto& [bin, item] : pairs)
+      items[next[bin]++] = item;
     pairs = {};
   }
 
@@ -168,8 +182,11 @@ private:
   std::vector<Aabb> boxes_;
   std::optional<IntervalRun> columns_, rows_run_;
   std::vector<std::size_t> reachable_; // bins meeting `reach`, when not monotone
-  Pairs terrainPairs_, riverPairs_;
-  std::vector<std::uint32_t> terrainBegin_, riverBegin_, terrain_, rivers_;
+  Pairs<std::uint32_t> terrainPairs_;
+  Pairs<construction::World::RiverCandidate> riverPairs_;
+  std::vector<std::size_t> lastRiver_; // per bin: its last entry in riverPairs_, or kNone
+  std::vector<std::uint32_t> terrainBegin_, riverBegin_, terrain_;
+  std::vector<construction::World::RiverCandidate> rivers_;
 };
 
 /// Squared distance from p to box b (0 inside).
@@ -210,17 +227,32 @@ std::pair<int, int> binShape(const SampleGrid& grid) {
 TileEvaluator::TileEvaluator(const construction::World& world)
     : world_(world), blocks_(world.data()) {}
 
-construction::World::Coast TileEvaluator::coastOf(Vec2 center, double halfDiagonal) const {
+TileEvaluator::BinShore TileEvaluator::shoreOf(const Aabb& box,
+                                               std::vector<std::uint32_t>& segments) const {
   using Coast = construction::World::Coast;
+  const Vec2 center = box.center();
+  const double halfDiagonal = 0.5 * length(box.size());
+  const double shelf = construction::World::shelfReach();
   const geometry::PolygonIndex& land = world_.land();
-  if (distanceToBox(center, land.bounds()) >= construction::World::shelfReach() + halfDiagonal)
-    return Coast::kFarSea; // cheap: far from the land's bounding box
+  if (distanceToBox(center, land.bounds()) >= shelf + halfDiagonal)
+    return {Coast::kFarSea, false}; // cheap: far from the land's bounding box
   const bool inside = land.contains(center);
-  const double reach =
-      (inside ? construction::CoastShape::kBand : construction::World::shelfReach()) + halfDiagonal;
-  if (land.distanceToBoundary(center, reach) < reach)
-    return Coast::kUnknown;
-  return inside ? Coast::kInland : Coast::kFarSea;
+  const geometry::BoundaryHit hit = land.nearestBoundary(center, shelf + halfDiagonal);
+  const double reach = (inside ? construction::CoastShape::kBand : shelf) + halfDiagonal;
+  if (hit.distance >= reach)
+    return {inside ? Coast::kInland : Coast::kFarSea, inside};
+  BinShore shore;
+  // No boundary within the box (with a margin far above rounding): every point lies on the
+  // side of the centre.
+  if (hit.distance > halfDiagonal * (1.0 + 1e-9) + 1e-6)
+    shore.onLand = inside;
+  // Every point is within hit.distance + halfDiagonal of the boundary point found, so its
+  // nearest segment (if nearer than the shelf's reach) comes that near the box.
+  const double near = std::min(hit.distance + halfDiagonal, shelf) * (1.0 + 1e-9) + 1e-6;
+  shore.begin = segments.size();
+  land.segmentsMeeting(box.expanded(near), segments);
+  shore.count = segments.size() - shore.begin;
+  return shore;
 }
 
 std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* stats) const {
@@ -240,6 +272,9 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
     local.riverPrimitives += r.riverEnd - r.riverBegin;
   }
   Bins bins(grid, groups, rows, reach);
+  // Rivers are thin beside a bin: they get bins one row high, so a run searches only the
+  // rivers that come near its own row.
+  Bins riverBins(grid, groups, 1, reach);
   // Blocks are ascending and their ranges contiguous, so primitive ids arrive ascending.
   for (std::uint32_t b : blocks) {
     const construction::BlockPrimitives& r = data.blocks[b];
@@ -254,28 +289,23 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
           [&](std::size_t bin) { bins.addTerrain(bin, i); });
     }
     for (std::uint32_t i = r.riverBegin; i < r.riverEnd; ++i) {
-      // A bin no run of the curve comes within the radius of gets w = 0 from this river (the
-      // margin keeps rounding on the side of extra, harmless, candidates).
-      const double radius = data.rivers[i].radius * (1.0 + 1e-9) + 1e-6;
+      // A bin no run of the curve comes within reach of gets w = 0 from this river.
+      const double riverReach = world_.riverReach(i);
       const std::span<const Aabb> chunks = world_.riverChunks(i);
-      bins.forEachBin(
-          world_.riverSupport(i),
-          [&](const Aabb& box) {
-            const Aabb near = box.expanded(radius);
-            return std::any_of(chunks.begin(), chunks.end(),
-                               [&](const Aabb& c) { return c.intersects(near); });
-          },
-          [&](std::size_t bin) { bins.addRiver(bin, i); });
+      for (std::uint32_t c = 0; c < chunks.size(); ++c)
+        riverBins.forEachBin(
+            chunks[c].expanded(riverReach), [](const Aabb&) { return true; },
+            [&](std::size_t bin) { riverBins.addRiverChunk(bin, i, c); });
     }
   }
   bins.finish();
-  std::vector<construction::World::Coast> coast(bins.count());
+  riverBins.finish();
+  std::vector<BinShore> shores(bins.count());
+  std::vector<std::uint32_t> shoreSegments;
   for (int j = 0; j < bins.perColumn(); ++j)
-    for (int i = 0; i < bins.perRow(); ++i) {
-      const Aabb& box = bins.box(i, j);
-      coast[static_cast<std::size_t>(j) * static_cast<std::size_t>(bins.perRow()) +
-            static_cast<std::size_t>(i)] = coastOf(box.center(), 0.5 * length(box.size()));
-    }
+    for (int i = 0; i < bins.perRow(); ++i)
+      shores[static_cast<std::size_t>(j) * static_cast<std::size_t>(bins.perRow()) +
+             static_cast<std::size_t>(i)] = shoreOf(bins.box(i, j), shoreSegments);
   const auto width = static_cast<std::size_t>(grid.width);
   for (int row = 0; row < grid.height; ++row) {
     const double spacing = grid.rowSpacing[static_cast<std::size_t>(row)];
@@ -291,8 +321,13 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
           heights[k + l] = world_.height(grid.points[k + l], spacing);
         continue;
       }
-      world_.heightsFrom({grid.points.data() + k, n}, spacing, bins.terrain(bin), bins.rivers(bin),
-                         coast[bin], {heights.data() + k, n});
+      const BinShore& s = shores[bin];
+      const construction::World::Shore shore{
+          s.coast, s.onLand,
+          std::span<const std::uint32_t>(shoreSegments).subspan(s.begin, s.count)};
+      world_.heightsFrom({grid.points.data() + k, n}, spacing, bins.terrain(bin),
+                         riverBins.rivers(riverBins.binOf(row, col)), shore,
+                         {heights.data() + k, n});
     }
   }
   if (stats)

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 
 namespace strahler::construction {
@@ -45,6 +46,21 @@ public:
   std::span<const geometry::Aabb> riverChunks(std::uint32_t i) const noexcept {
     return riverChunks_[i];
   }
+  /// How near (m) a run of river primitive i's curve must come to a point to shape it: the
+  /// river's radius with a margin for rounding (extra runs are harmless, missing ones not).
+  double riverReach(std::uint32_t i) const noexcept;
+  /// A river primitive among the candidates of some points, with the runs of its curve
+  /// (riverChunks()) to search: [firstChunk, endChunk) must hold every run that comes within
+  /// riverReach() of any of the points.
+  struct RiverCandidate {
+    std::uint32_t id = 0;
+    std::uint32_t firstChunk = 0;
+    std::uint32_t endChunk = 0;
+  };
+  /// River primitive i with every run of its curve.
+  RiverCandidate wholeRiver(std::uint32_t i) const noexcept {
+    return {i, 0, static_cast<std::uint32_t>(riverChunks_[i].size())};
+  }
   /// The land with fast point and distance queries.
   const geometry::PolygonIndex& land() const noexcept { return land_; }
 
@@ -77,20 +93,30 @@ public:
 
   /// Distance from the shore beyond which the sea floor is flat, m.
   static double shelfReach() noexcept;
+  /// What a caller knows about the shore near a group of points (heightsFrom()).
+  struct Shore {
+    Coast coast = Coast::kUnknown;
+    /// With kUnknown: whether every point lies on land (true) or every point at sea (false).
+    std::optional<bool> onLand;
+    /// With kUnknown: indices into land().segments() that hold the nearest boundary segment of
+    /// every point nearer than shelfReach() to the boundary (otherwise the index is searched).
+    std::optional<std::span<const std::uint32_t>> segments;
+  };
 
-  /// The evaluation at p from explicit candidate primitives: `terrain` and `rivers` hold
-  /// indices into data().terrain / data().rivers, ascending, and must include every primitive
-  /// whose support contains p (others are harmless). Bit-identical to evaluate(p, spacing).
+  /// The evaluation at p from explicit candidate primitives: `terrain` holds indices into
+  /// data().terrain, `rivers` candidates of data().rivers, both ascending, and must include
+  /// every primitive whose support contains p (others are harmless). Bit-identical to
+  /// evaluate(p, spacing).
   Evaluation evaluateFrom(geometry::Vec2 p, double spacing, std::span<const std::uint32_t> terrain,
-                          std::span<const std::uint32_t> rivers,
+                          std::span<const RiverCandidate> rivers,
                           Coast coast = Coast::kUnknown) const noexcept;
 
   /// Heights at many points sharing one spacing and one candidate set (as evaluateFrom() asks
   /// of each point), base::kLanes at a time with vector instructions: heights[i] equals
   /// height(points[i], spacing) bit for bit. `heights` has points.size() elements.
   void heightsFrom(std::span<const geometry::Vec2> points, double spacing,
-                   std::span<const std::uint32_t> terrain, std::span<const std::uint32_t> rivers,
-                   Coast coast, std::span<double> heights) const noexcept;
+                   std::span<const std::uint32_t> terrain, std::span<const RiverCandidate> rivers,
+                   const Shore& shore, std::span<double> heights) const noexcept;
 
   /// The fields of a terrain primitive the blend reads, packed (one cache line each).
   struct HotTerrain {
@@ -111,7 +137,12 @@ private:
                     std::span<const std::uint32_t> ids, double* h, double* w) const noexcept;
   /// U(R…) at `lanes` points (xs, ys) into out[0 .. lanes): 1 or base::kLanes, as terrainLanes.
   void riversLanes(std::size_t lanes, const double* xs, const double* ys,
-                   std::span<const std::uint32_t> ids, Sample* out) const noexcept;
+                   std::span<const RiverCandidate> rivers, Sample* out) const noexcept;
+  /// The height at a point `onLand` or not, `shore` metres from the boundary (capped at
+  /// CoastShape::kBand on land and shelfReach() at sea), from its terrain and rivers.
+  static double shapeCoast(const Sample& terrain, const Sample& rivers, bool onLand,
+                           double shore) noexcept;
+  /// The height at p where the shore is `coast`.
   double shapeCoast(geometry::Vec2 p, const Sample& terrain, const Sample& rivers,
                     Coast coast) const noexcept;
 
@@ -119,6 +150,8 @@ private:
   geometry::PolygonIndex land_;
   geometry::GridIndex terrainGrid_;
   geometry::GridIndex riverGrid_;
+  // Per cell of riverGrid_: its rivers, with the runs of their curves that come near the cell.
+  std::vector<std::vector<RiverCandidate>> riverCells_;
   std::vector<geometry::Aabb> riverSupport_; // per river primitive: its support box
   // Per river primitive: the box of each run of 8 curve segments, so the closest-point search
   // skips whole runs far from p instead of testing every segment's box.

@@ -44,6 +44,19 @@ public:
     return cells_[index(cellX(p.x), cellY(p.y))];
   }
 
+  /// Number of cells.
+  std::size_t cellCount() const noexcept { return cells_.size(); }
+  /// Index (below cellCount()) of the cell that holds p (clamped to the grid).
+  std::size_t cellIndexAt(Vec2 p) const noexcept { return index(cellX(p.x), cellY(p.y)); }
+  /// The ids registered in cell `index`, in insertion order.
+  const std::vector<std::uint32_t>& cell(std::size_t index) const noexcept { return cells_[index]; }
+  /// The box of cell `index` (points clamped into an edge cell may lie outside it).
+  Aabb cellBox(std::size_t index) const noexcept {
+    const auto x = static_cast<double>(index % static_cast<std::size_t>(nx_));
+    const auto y = static_cast<double>(index / static_cast<std::size_t>(nx_));
+    const Vec2 min{origin_.x + x * cellSize_, origin_.y + y * cellSize_};
+    return Aabb{min, {min.x + cellSize_, min.y + cellSize_}};
+  }
   /// Calls fn(id) for every id whose cells meet `box`; stops early if fn returns false.
   template <class Fn> bool query(const Aabb& box, Fn&& fn) const {
     int x0, y0, x1, y1;

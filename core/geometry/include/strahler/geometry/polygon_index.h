@@ -49,6 +49,9 @@ public:
   double distanceToBoundary(Vec2 p, double maxDistance) const noexcept {
     return nearestBoundary(p, maxDistance).distance;
   }
+  /// Appends to `out` the index of every segment whose bounding box meets `box`, each once,
+  /// ascending.
+  void segmentsMeeting(const Aabb& box, std::vector<std::uint32_t>& out) const;
   /// True when some boundary segment comes closer than `clearance` to segment [a, b]
   /// (clearance 0: when [a, b] touches or crosses the boundary).
   bool segmentNearBoundary(Vec2 a, Vec2 b, double clearance) const noexcept;

@@ -4,6 +4,7 @@
 #include "strahler/tiling/block_index.h"
 #include "strahler/tiling/tile_scheme.h"
 
+#include <optional>
 #include <vector>
 
 namespace strahler::tiling {
@@ -33,8 +34,15 @@ public:
   const BlockIndex& blocks() const noexcept { return blocks_; }
 
 private:
-  /// What every point within `halfDiagonal` of `center` is, as far as the coast goes.
-  construction::World::Coast coastOf(geometry::Vec2 center, double halfDiagonal) const;
+  /// What the points of `box` share about the shore; the candidate segments it names are
+  /// appended to `segments` (the returned span points into it once filling is done, so it is
+  /// given as offsets: begin and count).
+  struct BinShore {
+    construction::World::Coast coast = construction::World::Coast::kUnknown;
+    std::optional<bool> onLand;
+    std::size_t begin = 0, count = 0; ///< candidate segments: segments[begin, begin + count)
+  };
+  BinShore shoreOf(const geometry::Aabb& box, std::vector<std::uint32_t>& segments) const;
 
   const construction::World& world_;
   BlockIndex blocks_;
