@@ -52,18 +52,19 @@ inline constexpr std::size_t kChunk = 8;
 /// One closest-point search on a river curve for base::kLanes points (xs, ys); points outside
 /// the support box are not searched, nor runs of the curve before firstChunk or after the
 /// chunks given. Results per lane: the distance to the curve (infinity when not searched or
-/// farther than the river's radius), the water elevation there and the fraction along the
-/// curve (0 upstream .. 1 downstream).
+/// not nearer than the radius) and, where finite, the segment of the closest point and the
+/// fraction of the way along it.
 struct CurveLaneArgs {
-  const primitives::RiverPrimitive* river = nullptr;
+  double radius = 0.0;
   geometry::Aabb support; ///< the river's support box
   std::span<const geometry::Aabb>
       chunks; ///< the box of each run of kChunk segments, up to the last run searched
-  std::size_t firstChunk = 0; ///< the first run searched
+  std::size_t firstChunk = 0;                  ///< the first run searched
+  std::span<const World::HotSegment> segments; ///< every segment of the curve
   const double* xs = nullptr;
   const double* ys = nullptr;
   double* distance = nullptr;
-  double* elevation = nullptr;
+  std::int64_t* segment = nullptr;
   double* along = nullptr;
 };
 

@@ -66,6 +66,16 @@ World::World(WorldData data)
       chunks.push_back(box);
     }
     riverChunks_.push_back(std::move(chunks));
+    segmentBegin_.push_back(hotSegments_.size());
+    for (std::size_t k = 0; k + 1 < curve.size(); ++k) {
+      const Vec2 a = curve[k].position, ab = curve[k + 1].position - a;
+      const double length2 = lengthSquared(ab);
+      geometry::Aabb box;
+      box.add(a);
+      box.add(curve[k + 1].position);
+      hotSegments_.push_back({a, ab, length2 > 0.0 ? 1.0 / length2 : 0.0, curve[k].elevation,
+                              curve[k + 1].elevation - curve[k].elevation, box});
+    }
     riverGrid_.insert(riverSupport_.back(), i);
   }
   riverCells_.resize(riverGrid_.cellCount());
@@ -120,20 +130,23 @@ void World::terrainLanes(std::size_t lanes, const double* xs, const double* ys, 
 void World::riversLanes(std::size_t lanes, const double* xs, const double* ys,
                         std::span<const RiverCandidate> rivers, Sample* out) const noexcept {
   constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
-  std::array<double, kLanes> distance, elevation, along;
+  std::array<double, kLanes> distance, along;
+  std::array<std::int64_t, kLanes> segment;
   for (std::size_t l = 0; l < lanes; ++l)
     out[l] = {};
   for (const RiverCandidate& c : rivers) {
     const std::uint32_t i = c.id;
     const primitives::RiverPrimitive& r = data_.rivers[i];
-    const detail::CurveLaneArgs args{&r,
+    const HotSegment* segments = hotSegments_.data() + segmentBegin_[i];
+    const detail::CurveLaneArgs args{r.radius,
                                      riverSupport_[i],
                                      std::span(riverChunks_[i]).subspan(0, c.endChunk),
                                      c.firstChunk,
+                                     {segments, r.curve.size() - 1},
                                      xs,
                                      ys,
                                      distance.data(),
-                                     elevation.data(),
+                                     segment.data(),
                                      along.data()};
     if (lanes == 1 ? !detail::closestOnCurvePoint(args) : !detail::closestOnCurveLanes(args))
       continue; // no point within the river's radius
@@ -144,9 +157,14 @@ void World::riversLanes(std::size_t lanes, const double* xs, const double* ys,
       const double w = primitives::falloff(d * d, r.radius * r.radius);
       if (w <= 0.0)
         continue;
-      const double width = r.widthUp + (r.widthDown - r.widthUp) * along[l];
-      const double depth = r.depthUp + (r.depthDown - r.depthUp) * along[l];
-      const Sample s{elevation[l] + primitives::riverProfile(r.type, width, depth, d), w};
+      // The closest point lies `along[l]` of the way along segment k.
+      const auto k = static_cast<std::size_t>(segment[l]);
+      const double elevation = segments[k].elevation + segments[k].rise * along[l];
+      const double fraction =
+          (static_cast<double>(k) + along[l]) / static_cast<double>(r.curve.size() - 1);
+      const double width = r.widthUp + (r.widthDown - r.widthUp) * fraction;
+      const double depth = r.depthUp + (r.depthDown - r.depthUp) * fraction;
+      const Sample s{elevation + primitives::riverProfile(r.type, width, depth, d), w};
       out[l] = out[l].w > 0.0 ? uniteByInfluence(out[l], s) : s;
     }
   }

@@ -84,6 +84,39 @@ TEST(TileEvaluator, LowZoomTilesEqualTheWholeWorld) {
   }
 }
 
+TEST(TileEvaluator, CoastalTilesEqualTheWholeWorld) {
+  // Whole 256² tiles across the shore at the zooms where a bin spans hundreds of metres: the
+  // shore distance comes from each bin's candidate segments, the land/sea side from one test
+  // per bin where no boundary crosses it, rivers from the runs of their curves near each row.
+  const construction::World& world = islandWorld();
+  const TileEvaluator evaluator(world);
+  const Vec2 c = world.data().projectionCenter;
+  const double shelfFloor = -construction::CoastShape::kShelfDepth;
+  for (int z : {8, 9, 10, 11}) {
+    int land = 0, shelf = 0, mixedTiles = 0;
+    for (int dx = 0; dx < 4; ++dx) {
+      TileId tile = webTileAt(c.x, c.y, z);
+      tile.x += dx * (1 << (z - 8)); // eastwards from the centre, into the sea
+      const SampleGrid grid = webScheme().rasterGrid(tile, 256);
+      const std::vector<double> fast = evaluator.evaluate(grid);
+      int tileLand = 0, tileSea = 0;
+      for (std::size_t k = 0; k < grid.points.size(); ++k) {
+        const double slow = world.height(grid.points[k], grid.rowSpacing[k / grid.width]);
+        ASSERT_EQ(std::memcmp(&fast[k], &slow, sizeof slow), 0)
+            << "tile " << z << "/" << tile.x << "/" << tile.y << " sample " << k;
+        tileLand += slow > 0.0;
+        tileSea += slow < 0.0;
+        shelf += slow < 0.0 && slow > 0.9 * shelfFloor; // on the shelf, near the shore
+      }
+      land += tileLand;
+      mixedTiles += tileLand > 0 && tileSea > 0;
+    }
+    EXPECT_GT(land, 0) << "zoom " << z;
+    EXPECT_GT(shelf, 0) << "zoom " << z;
+    EXPECT_GT(mixedTiles, 0) << "zoom " << z;
+  }
+}
+
 TEST(TileEvaluator, SmallTilesGatherFewPrimitives) {
   const TileEvaluator evaluator(islandWorld());
   const TileScheme s = localScheme();

@@ -29,6 +29,26 @@ using Int32s = std::int32_t __attribute__((vector_size(4 * kLanes)));
   return m[0] != 0;
 }
 
+/// The least and the greatest lane of `v` (by shuffles, kept in registers).
+[[gnu::always_inline]] inline void laneRange(Doubles v, double& least, double& greatest) noexcept {
+  static_assert(kLanes == 8);
+  Doubles lo = v, hi = v, s;
+  s = __builtin_shuffle(lo, LaneMask{4, 5, 6, 7, 0, 1, 2, 3});
+  lo = s < lo ? s : lo;
+  s = __builtin_shuffle(hi, LaneMask{4, 5, 6, 7, 0, 1, 2, 3});
+  hi = s > hi ? s : hi;
+  s = __builtin_shuffle(lo, LaneMask{2, 3, 0, 1, 6, 7, 4, 5});
+  lo = s < lo ? s : lo;
+  s = __builtin_shuffle(hi, LaneMask{2, 3, 0, 1, 6, 7, 4, 5});
+  hi = s > hi ? s : hi;
+  s = __builtin_shuffle(lo, LaneMask{1, 0, 3, 2, 5, 4, 7, 6});
+  lo = s < lo ? s : lo;
+  s = __builtin_shuffle(hi, LaneMask{1, 0, 3, 2, 5, 4, 7, 6});
+  hi = s > hi ? s : hi;
+  least = lo[0];
+  greatest = hi[0];
+}
+
 /// All lanes equal to v.
 [[gnu::always_inline]] inline Doubles splat(double v) noexcept {
   return Doubles{} + v;

@@ -127,6 +127,15 @@ public:
     double amplitude = 0.0;      ///< ≥ 0
     double roughness = 0.0;      ///< fBm gain in [0, kMaxRoughness]
   };
+  /// A segment of a river curve as the closest-point search reads it.
+  struct HotSegment {
+    geometry::Vec2 a;            ///< start
+    geometry::Vec2 ab;           ///< end − start
+    double inverseLength2 = 0.0; ///< 1 / |ab|² (0 for a segment of length 0)
+    double elevation = 0.0;      ///< water elevation at the start
+    double rise = 0.0;           ///< water elevation at the end − at the start
+    geometry::Aabb box;          ///< bounding box
+  };
   /// Largest fBm gain evaluated (keeps octave amplitudes decreasing).
   static constexpr double kMaxRoughness = 0.95;
 
@@ -156,6 +165,9 @@ private:
   // Per river primitive: the box of each run of 8 curve segments, so the closest-point search
   // skips whole runs far from p instead of testing every segment's box.
   std::vector<std::vector<geometry::Aabb>> riverChunks_;
+  // The segments of every river curve, river after river; river i's start at segmentBegin_[i].
+  std::vector<HotSegment> hotSegments_;
+  std::vector<std::size_t> segmentBegin_;
   std::vector<HotTerrain> hot_; // per terrain primitive
   noise::LatticeNoise noise_;
 };
