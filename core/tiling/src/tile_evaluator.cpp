@@ -72,18 +72,44 @@ private:
 /// of such runs.
 class Bins {
 public:
-  /// Bins over `grid`; no primitive reaches outside `reach` (used when rows or columns are not
-  /// monotone in the local frame: tiles spanning half the globe).
-  Bins(const SampleGrid& grid, int groups, int rows, const Aabb& reach)
-      : groups_(groups), rows_(rows) {
+  /// The box of each run of base::kLanes samples of each row of `grid` (row-major).
+  static std::vector<Aabb> runBoxes(const SampleGrid& grid) {
     const auto width = static_cast<std::size_t>(grid.width);
+    std::vector<Aabb> boxes;
+    boxes.reserve((width + base::kLanes - 1) / base::kLanes *
+                  static_cast<std::size_t>(grid.height));
+    for (std::size_t row = 0; row < static_cast<std::size_t>(grid.height); ++row)
+      for (std::size_t c = 0; c < width; c += base::kLanes) {
+        Aabb& box = boxes.emplace_back();
+        const std::size_t end = std::min(width, c + base::kLanes);
+        for (std::size_t k = row * width + c; k < row * width + end; ++k)
+          box.add(grid.points[k]);
+      }
+    return boxes;
+  }
+
+  /// Bins over `grid`, whose run boxes are `runBoxes`; no primitive reaches outside `reach`
+  /// (used when rows or columns are not monotone in the local frame: tiles spanning half the
+  /// globe).
+  Bins(const SampleGrid& grid, std::span<const Aabb> runBoxes, int groups, int rows,
+       const Aabb& reach)
+      : groups_(groups), rows_(rows) {
     const int runs = (grid.width + base::kLanes - 1) / base::kLanes;
     nx_ = (runs + groups - 1) / groups;
     ny_ = (grid.height + rows - 1) / rows;
     boxes_.resize(count());
-    for (int r = 0; r < grid.height; ++r)
-      for (int c = 0; c < grid.width; ++c)
-        boxes_[binOf(r, c)].add(grid.points[static_cast<std::size_t>(r) * width + c]);
+    std::vector<std::size_t> columnOfRun(static_cast<std::size_t>(runs));
+    for (int q = 0; q < runs; ++q)
+      columnOfRun[static_cast<std::size_t>(q)] = static_cast<std::size_t>(q / groups);
+    for (int r = 0; r < grid.height; ++r) {
+      Aabb* binRow = boxes_.data() + static_cast<std::size_t>(r / rows) * nx_;
+      const Aabb* run = runBoxes.data() + static_cast<std::size_t>(r) * runs;
+      for (std::size_t q = 0; q < columnOfRun.size(); ++q) {
+        Aabb& box = binRow[columnOfRun[q]];
+        box.add(run[q].min);
+        box.add(run[q].max);
+      }
+    }
     std::vector<double> colLo(nx_, kInf), colHi(nx_, -kInf), rowLo(ny_, kInf), rowHi(ny_, -kInf);
     for (int j = 0; j < ny_; ++j)
       for (int i = 0; i < nx_; ++i) {
@@ -134,16 +160,16 @@ public:
   /// Adds terrain primitive `id` to the list of `bin`. Lists keep the order of addition;
   /// finish() must follow the last addition.
   void addTerrain(std::size_t bin, std::uint32_t id) { terrainPairs_.push_back({bin, id}); }
-  /// Adds run `chunk` of river primitive `id`'s curve to `bin`: rivers must come in ascending
-  /// order and each river's runs ascending.
-  void addRiverChunk(std::size_t bin, std::uint32_t id, std::uint32_t chunk) {
+  /// Adds runs [first, end) of river primitive `id`'s curve to `bin`: rivers must come in
+  /// ascending order and each river's runs ascending.
+  void addRiverChunks(std::size_t bin, std::uint32_t id, std::uint32_t first, std::uint32_t end) {
     std::size_t& last = lastRiver_[bin];
     if (last != kNone && riverPairs_[last].second.id == id) {
-      riverPairs_[last].second.endChunk = chunk + 1;
+      riverPairs_[last].second.endChunk = end;
       return;
     }
     last = riverPairs_.size();
-    riverPairs_.push_back({static_cast<std::uint32_t>(bin), {id, chunk, chunk + 1}});
+    riverPairs_.push_back({static_cast<std::uint32_t>(bin), {id, first, end}});
   }
   void finish() {
     sortByBin(terrainPairs_, terrainBegin_, terrain_);
@@ -271,10 +297,11 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
     local.terrainPrimitives += r.terrainEnd - r.terrainBegin;
     local.riverPrimitives += r.riverEnd - r.riverBegin;
   }
-  Bins bins(grid, groups, rows, reach);
+  const std::vector<Aabb> runBoxes = Bins::runBoxes(grid);
+  Bins bins(grid, runBoxes, groups, rows, reach);
   // Rivers are thin beside a bin: they get bins one row high, so a run searches only the
   // rivers that come near its own row.
-  Bins riverBins(grid, groups, 1, reach);
+  Bins riverBins(grid, runBoxes, groups, 1, reach);
   // Blocks are ascending and their ranges contiguous, so primitive ids arrive ascending.
   for (std::uint32_t b : blocks) {
     const construction::BlockPrimitives& r = data.blocks[b];
@@ -290,12 +317,23 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
     }
     for (std::uint32_t i = r.riverBegin; i < r.riverEnd; ++i) {
       // A bin no run of the curve comes within reach of gets w = 0 from this river.
-      const double riverReach = world_.riverReach(i);
+      const auto always = [](const Aabb&) { return true; };
       const std::span<const Aabb> chunks = world_.riverChunks(i);
-      for (std::uint32_t c = 0; c < chunks.size(); ++c)
-        riverBins.forEachBin(
-            chunks[c].expanded(riverReach), [](const Aabb&) { return true; },
-            [&](std::size_t bin) { riverBins.addRiverChunk(bin, i, c); });
+      const auto all = static_cast<std::uint32_t>(chunks.size());
+      std::size_t only = 0, meeting = 0;
+      riverBins.forEachBin(world_.riverSupport(i), always, [&](std::size_t bin) {
+        only = bin;
+        ++meeting;
+      });
+      if (meeting <= 1) { // a short river within one bin (or none): all of its curve
+        if (meeting == 1)
+          riverBins.addRiverChunks(only, i, 0, all);
+        continue;
+      }
+      const double riverReach = world_.riverReach(i);
+      for (std::uint32_t c = 0; c < all; ++c)
+        riverBins.forEachBin(chunks[c].expanded(riverReach), always,
+                             [&](std::size_t bin) { riverBins.addRiverChunks(bin, i, c, c + 1); });
     }
   }
   bins.finish();
