@@ -121,7 +121,7 @@ public:
       }
     columns_.emplace(std::move(colLo), std::move(colHi));
     rows_run_.emplace(std::move(rowLo), std::move(rowHi));
-    if (!columns_->monotone() || !rows_run_->monotone())
+    if (!monotone())
       for (std::size_t b = 0; b < count(); ++b)
         if (!boxes_[b].empty() && boxes_[b].intersects(reach))
           reachable_.push_back(b);
@@ -139,22 +139,44 @@ public:
     return boxes_[static_cast<std::size_t>(j) * nx_ + i];
   }
 
-  /// Calls f(bin) for every bin whose box meets `support` and satisfies meets(box).
-  template <class Meets, class F> void forEachBin(const Aabb& support, Meets&& meets, F&& f) const {
-    if (!columns_->monotone() || !rows_run_->monotone()) {
+  /// Bins [i0, i1) × [j0, j1) of a box: columns and rows that meet it (all of them when
+  /// rows or columns are not monotone).
+  struct Range {
+    int i0 = 0, i1 = 0, j0 = 0, j1 = 0;
+    int size() const noexcept { return (i1 - i0) * (j1 - j0); }
+  };
+  Range rangeOf(const Aabb& box) const noexcept {
+    if (!monotone())
+      return {0, nx_, 0, ny_};
+    const auto [i0, i1] = columns_->meeting(box.min.x, box.max.x);
+    const auto [j0, j1] = rows_run_->meeting(box.min.y, box.max.y);
+    return {i0, i1, j0, j1};
+  }
+  /// Whether rows and columns are monotone (bins are then found by ranges).
+  bool monotone() const noexcept { return columns_->monotone() && rows_run_->monotone(); }
+  /// The bin at (i, j).
+  std::size_t at(int i, int j) const noexcept { return static_cast<std::size_t>(j) * nx_ + i; }
+
+  /// Calls f(bin) for every bin of `range` (that of a box holding `support`) whose box meets
+  /// `support` and satisfies meets(box).
+  template <class Meets, class F>
+  void forEachBin(const Range& range, const Aabb& support, Meets&& meets, F&& f) const {
+    if (!monotone()) {
       for (const std::size_t bin : reachable_)
         if (boxes_[bin].intersects(support) && meets(boxes_[bin]))
           f(bin);
       return;
     }
-    const auto [i0, i1] = columns_->meeting(support.min.x, support.max.x);
-    const auto [j0, j1] = rows_run_->meeting(support.min.y, support.max.y);
-    for (int j = j0; j < j1; ++j)
-      for (int i = i0; i < i1; ++i) {
+    for (int j = range.j0; j < range.j1; ++j)
+      for (int i = range.i0; i < range.i1; ++i) {
         const Aabb& b = box(i, j);
         if (!b.empty() && b.intersects(support) && meets(b))
-          f(static_cast<std::size_t>(j) * nx_ + i);
+          f(at(i, j));
       }
+  }
+  /// forEachBin() over the range of `support` itself.
+  template <class Meets, class F> void forEachBin(const Aabb& support, Meets&& meets, F&& f) const {
+    forEachBin(rangeOf(support), support, meets, f);
   }
 
   /// Adds terrain primitive `id` to the list of `bin`. Lists keep the order of addition;
@@ -227,6 +249,10 @@ double distanceToBox(Vec2 p, const Aabb& b) {
   const double dy = std::max({b.min.y - p.y, 0.0, p.y - b.max.y});
   return std::hypot(dx, dy);
 }
+
+/// A block meeting at most this many bins has its primitives' bins found by testing each of
+/// its bins; more, by searching for each primitive's own range.
+constexpr int kScanBins = 16;
 
 /// A bin with more terrain candidates than this is evaluated point by point.
 constexpr std::size_t kDenseBin = 1024;
@@ -305,13 +331,20 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
   // Blocks are ascending and their ranges contiguous, so primitive ids arrive ascending.
   for (std::uint32_t b : blocks) {
     const construction::BlockPrimitives& r = data.blocks[b];
-    for (std::uint32_t i = r.terrainBegin; i < r.terrainEnd; ++i) {
+    // The block's primitives lie within its influence box: their bins are among its bins,
+    // and where that is one bin they all go there (extra candidates are harmless).
+    const Bins::Range range = bins.rangeOf(blocks_.influence(b));
+    const bool oneBin = range.size() == 1 && bins.monotone();
+    for (std::uint32_t i = r.terrainBegin; i < r.terrainEnd && oneBin; ++i)
+      bins.addTerrain(bins.at(range.i0, range.j0), i);
+    for (std::uint32_t i = r.terrainBegin; i < r.terrainEnd && !oneBin && range.size() > 0; ++i) {
       const primitives::TerrainPrimitive& t = data.terrain[i];
       // Squared, without hypot: the slack (1e-9 relative) only ever admits extra candidates,
       // which are harmless (w = 0 beyond the radius).
       const double reach2 = t.radius * t.radius * (1.0 + 1e-9);
+      const Aabb support = Aabb{t.center, t.center}.expanded(t.radius);
       bins.forEachBin(
-          Aabb{t.center, t.center}.expanded(t.radius),
+          range.size() <= kScanBins ? range : bins.rangeOf(support), support,
           [&](const Aabb& box) { return distanceToBox2(t.center, box) <= reach2; },
           [&](std::size_t bin) { bins.addTerrain(bin, i); });
     }
