@@ -182,6 +182,22 @@ public:
   /// Adds terrain primitive `id` to the list of `bin`. Lists keep the order of addition;
   /// finish() must follow the last addition.
   void addTerrain(std::size_t bin, std::uint32_t id) { terrainPairs_.push_back({bin, id}); }
+  /// Adds terrain primitive `id` to every bin of `range` (monotone bins) whose box its disc
+  /// (centre, squared radius with slack) meets; without a branch per bin, which would be
+  /// mispredicted about every other time.
+  void addTerrainDisc(const Range& range, Vec2 center, double reach2, std::uint32_t id) {
+    std::size_t n = terrainPairs_.size();
+    terrainPairs_.resize(n + static_cast<std::size_t>(range.size()));
+    for (int j = range.j0; j < range.j1; ++j)
+      for (int i = range.i0; i < range.i1; ++i) {
+        const Aabb& b = box(i, j); // empty boxes are +inf..-inf: never met
+        const double dx = std::max({b.min.x - center.x, 0.0, center.x - b.max.x});
+        const double dy = std::max({b.min.y - center.y, 0.0, center.y - b.max.y});
+        terrainPairs_[n] = {static_cast<std::uint32_t>(at(i, j)), id};
+        n += static_cast<std::size_t>(dx * dx + dy * dy <= reach2);
+      }
+    terrainPairs_.resize(n);
+  }
   /// Adds runs [first, end) of river primitive `id`'s curve to `bin`: rivers must come in
   /// ascending order and each river's runs ascending.
   void addRiverChunks(std::size_t bin, std::uint32_t id, std::uint32_t first, std::uint32_t end) {
@@ -343,10 +359,14 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
       // which are harmless (w = 0 beyond the radius).
       const double reach2 = t.radius * t.radius * (1.0 + 1e-9);
       const Aabb support = Aabb{t.center, t.center}.expanded(t.radius);
-      bins.forEachBin(
-          range.size() <= kScanBins ? range : bins.rangeOf(support), support,
-          [&](const Aabb& box) { return distanceToBox2(t.center, box) <= reach2; },
-          [&](std::size_t bin) { bins.addTerrain(bin, i); });
+      if (!bins.monotone()) {
+        bins.forEachBin(
+            support, [&](const Aabb& box) { return distanceToBox2(t.center, box) <= reach2; },
+            [&](std::size_t bin) { bins.addTerrain(bin, i); });
+        continue;
+      }
+      bins.addTerrainDisc(range.size() <= kScanBins ? range : bins.rangeOf(support), t.center,
+                          reach2, i);
     }
     for (std::uint32_t i = r.riverBegin; i < r.riverEnd; ++i) {
       // A bin no run of the curve comes within reach of gets w = 0 from this river.
