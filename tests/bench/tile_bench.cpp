@@ -46,6 +46,25 @@ void BM_TileRestricted(benchmark::State& state) {
                                                    benchmark::Counter::kIsIterationInvariantRate);
 }
 
+/// BM_TileRestricted on a narrower instruction set than the CPU's widest (range(1): 0 SSE2,
+/// 1 AVX2), for machines without AVX-512; skipped where the CPU lacks it.
+void BM_TileRestrictedOn(benchmark::State& state) {
+  const Fixture& f = fixture();
+  const construction::InstructionSet saved = construction::instructionSet();
+  const auto set = state.range(1) == 0 ? construction::InstructionSet::kBaseline
+                                       : construction::InstructionSet::kAvx2;
+  if (!construction::useInstructionSet(set)) {
+    state.SkipWithError("the CPU lacks this instruction set");
+    return;
+  }
+  const tiling::SampleGrid grid = f.web.rasterGrid(tileAt(static_cast<int>(state.range(0))), 256);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(f.evaluator.evaluate(grid));
+  construction::useInstructionSet(saved);
+  state.counters["samples/s"] = benchmark::Counter(static_cast<double>(grid.points.size()),
+                                                   benchmark::Counter::kIsIterationInvariantRate);
+}
+
 /// The same samples through the whole-world evaluator (World::height, its uniform grid).
 void BM_TileWholeWorld(benchmark::State& state) {
   const Fixture& f = fixture();
@@ -83,6 +102,10 @@ BENCHMARK(BM_TileRestricted)
     ->Arg(5)
     ->Arg(15)
     ->Arg(18)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TileRestrictedOn)
+    ->ArgsProduct({{0, 9, 13, 18}, {0, 1}})
+    ->ArgNames({"zoom", "avx2"})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TileWholeWorld)->Arg(0)->Arg(9)->Arg(13)->Arg(18)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TileAllPrimitives)->Arg(13)->Unit(benchmark::kMillisecond);

@@ -14,21 +14,40 @@ namespace strahler::construction {
 namespace detail {
 namespace {
 
-namespace baseline { // SSE2, every x86-64
+namespace baseline { // SSE2, every x86-64: two doubles per register
+constexpr int kWidth = 2;
+#define STRAHLER_KERNEL_WIDTH 2
 #include "evaluation_kernels.inc"
+#undef STRAHLER_KERNEL_WIDTH
 } // namespace baseline
+
+// SSE2 again with vectors of eight: the noise's 32-bit multiplications and gradient lookups
+// cost less split over four registers than done two lanes at a time (measured: zoom 18 tiles
+// 35 → 15 ms); every other kernel is faster two lanes at a time.
+namespace baselineNoise {
+constexpr int kWidth = 8;
+#define STRAHLER_KERNEL_WIDTH 8
+#include "evaluation_kernels.inc"
+#undef STRAHLER_KERNEL_WIDTH
+} // namespace baselineNoise
 
 #pragma GCC push_options
 #pragma GCC target("avx2")
-namespace avx2 {
+namespace avx2 { // four doubles per register
+constexpr int kWidth = 4;
+#define STRAHLER_KERNEL_WIDTH 4
 #include "evaluation_kernels.inc"
+#undef STRAHLER_KERNEL_WIDTH
 } // namespace avx2
 #pragma GCC pop_options
 
 #pragma GCC push_options
 #pragma GCC target("avx512f,avx512dq")
-namespace avx512 {
+namespace avx512 { // eight doubles per register
+constexpr int kWidth = 8;
+#define STRAHLER_KERNEL_WIDTH 8
 #include "evaluation_kernels.inc"
+#undef STRAHLER_KERNEL_WIDTH
 } // namespace avx512
 #pragma GCC pop_options
 
@@ -78,14 +97,15 @@ bool closestOnCurveLanes(const CurveLaneArgs& args) noexcept {
 }
 
 bool closestOnCurvePoint(const CurveLaneArgs& args) noexcept {
-  return baseline::curveKernel<baseline::Single>(args);
+  return baseline::curveKernel<baseline::Single>(args, 0);
 }
 
 void terrainLanes(const TerrainLaneArgs& args) noexcept {
   // Two functions, not one: in a single function GCC keeps the sums' accumulators on the
   // stack (the noise needs many registers), and every candidate then waits on a store.
   runBuild(baseline::terrainSumsLanes, avx2::terrainSumsLanes, avx512::terrainSumsLanes, args);
-  runBuild(baseline::terrainNoiseLanes, avx2::terrainNoiseLanes, avx512::terrainNoiseLanes, args);
+  runBuild(baselineNoise::terrainNoiseLanes, avx2::terrainNoiseLanes, avx512::terrainNoiseLanes,
+           args);
 }
 
 void terrainPoint(const TerrainLaneArgs& args) noexcept {

@@ -6,10 +6,14 @@ namespace strahler::noise {
 
 LatticeNoise::LatticeNoise(std::uint64_t seed) noexcept
     : seed_(static_cast<std::uint32_t>(seed ^ (seed >> 32))) {
-  for (int i = 0; i < 16; ++i) {
-    gradientX_[i / base::kLanes][i % base::kLanes] = detail::kGradients[i][0];
-    gradientY_[i / base::kLanes][i % base::kLanes] = detail::kGradients[i][1];
-  }
+  for (int i = 0; i < 16; ++i)
+    for (int axis = 0; axis < 2; ++axis) {
+      Table& t = axis == 0 ? gradientX_ : gradientY_;
+      const double g = detail::kGradients[i][axis];
+      t.by2[i / 2][i % 2] = g;
+      t.by4[i / 4][i % 4] = g;
+      t.by8[i / 8][i % 8] = g;
+    }
 }
 
 double LatticeNoise::at(geometry::Vec2 p) const noexcept {

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 
@@ -11,21 +12,25 @@
 namespace strahler::noise {
 namespace {
 
-using base::Doubles;
 using base::kLanes;
 
-/// Lanes of atLanes() at (xs, ys).
+/// atLanes() at (xs, ys), W lanes at a time.
+template <int W>
 std::array<double, kLanes> lanes(const LatticeNoise& n, const double* xs, const double* ys) {
-  Doubles x, y;
-  std::memcpy(&x, xs, sizeof x);
-  std::memcpy(&y, ys, sizeof y);
-  const Doubles v = n.atLanes(x, y);
+  using D = typename base::Vectors<W>::Doubles;
   std::array<double, kLanes> out;
-  std::memcpy(out.data(), &v, sizeof v);
+  for (int first = 0; first < kLanes; first += W) {
+    D x, y;
+    std::memcpy(&x, xs + first, sizeof x);
+    std::memcpy(&y, ys + first, sizeof y);
+    const D v = n.atLanes<W>(x, y);
+    std::memcpy(out.data() + first, &v, sizeof v);
+  }
   return out;
 }
 
-TEST(LatticeNoise, LanesEqualSinglePointsBitForBit) {
+/// Every lane of atLanes<W>() equals at() bit for bit, on random points at many scales.
+template <int W> void expectLanesEqualSinglePoints() {
   const LatticeNoise n(42);
   base::Rng rng(3);
   for (int trial = 0; trial < 2000; ++trial) {
@@ -37,12 +42,19 @@ TEST(LatticeNoise, LanesEqualSinglePointsBitForBit) {
     }
     if (trial % 7 == 0)
       xs[trial % kLanes] = std::floor(xs[trial % kLanes]); // on a lattice line
-    const std::array<double, kLanes> got = lanes(n, xs, ys);
+    const std::array<double, kLanes> got = lanes<W>(n, xs, ys);
     for (int l = 0; l < kLanes; ++l) {
       const double expected = n.at({xs[l], ys[l]});
-      ASSERT_EQ(got[static_cast<std::size_t>(l)], expected) << xs[l] << ", " << ys[l];
+      ASSERT_EQ(got[static_cast<std::size_t>(l)], expected)
+          << "width " << W << " at " << xs[l] << ", " << ys[l];
     }
   }
+}
+
+TEST(LatticeNoise, LanesEqualSinglePointsBitForBit) {
+  expectLanesEqualSinglePoints<8>();
+  expectLanesEqualSinglePoints<4>(); // the AVX2 kernels' width
+  expectLanesEqualSinglePoints<2>(); // the SSE2 kernels' width
 }
 
 TEST(LatticeNoise, ZeroOnTheLatticeAndBoundedBetween) {

@@ -13,12 +13,36 @@ namespace strahler::base {
 
 /// Number of samples evaluated together.
 inline constexpr int kLanes = 8;
+
+/// Vectors of W lanes, W = 2, 4 or 8: one SSE2, AVX2 or AVX-512 register of doubles (wider
+/// vectors than the registers get their comparisons split into scalar code). Specialised per
+/// width: GCC ignores a vector_size that depends on a template parameter.
+template <int W> struct Vectors;
+template <> struct Vectors<2> {
+  using Doubles = double __attribute__((vector_size(16)));
+  using Int64s = std::int64_t __attribute__((vector_size(16)));
+  using Int32s = std::int32_t __attribute__((vector_size(8)));
+  using Words = std::uint32_t __attribute__((vector_size(8)));
+};
+template <> struct Vectors<4> {
+  using Doubles = double __attribute__((vector_size(32)));
+  using Int64s = std::int64_t __attribute__((vector_size(32)));
+  using Int32s = std::int32_t __attribute__((vector_size(16)));
+  using Words = std::uint32_t __attribute__((vector_size(16)));
+};
+template <> struct Vectors<8> {
+  using Doubles = double __attribute__((vector_size(64)));
+  using Int64s = std::int64_t __attribute__((vector_size(64)));
+  using Int32s = std::int32_t __attribute__((vector_size(32)));
+  using Words = std::uint32_t __attribute__((vector_size(32)));
+};
+
 /// kLanes doubles.
-using Doubles = double __attribute__((vector_size(8 * kLanes)));
+using Doubles = Vectors<kLanes>::Doubles;
 /// kLanes lane masks (all bits set where a comparison holds), as comparisons of Doubles give.
-using LaneMask = std::int64_t __attribute__((vector_size(8 * kLanes)));
+using LaneMask = Vectors<kLanes>::Int64s;
 /// kLanes 32-bit integers.
-using Int32s = std::int32_t __attribute__((vector_size(4 * kLanes)));
+using Int32s = Vectors<kLanes>::Int32s;
 
 /// Whether any lane of `m` is set (an OR across lanes by shuffles, kept in registers).
 [[gnu::always_inline]] inline bool anyLane(LaneMask m) noexcept {
@@ -27,26 +51,6 @@ using Int32s = std::int32_t __attribute__((vector_size(4 * kLanes)));
   m |= __builtin_shuffle(m, LaneMask{2, 3, 0, 1, 6, 7, 4, 5});
   m |= __builtin_shuffle(m, LaneMask{1, 0, 3, 2, 5, 4, 7, 6});
   return m[0] != 0;
-}
-
-/// The least and the greatest lane of `v` (by shuffles, kept in registers).
-[[gnu::always_inline]] inline void laneRange(Doubles v, double& least, double& greatest) noexcept {
-  static_assert(kLanes == 8);
-  Doubles lo = v, hi = v, s;
-  s = __builtin_shuffle(lo, LaneMask{4, 5, 6, 7, 0, 1, 2, 3});
-  lo = s < lo ? s : lo;
-  s = __builtin_shuffle(hi, LaneMask{4, 5, 6, 7, 0, 1, 2, 3});
-  hi = s > hi ? s : hi;
-  s = __builtin_shuffle(lo, LaneMask{2, 3, 0, 1, 6, 7, 4, 5});
-  lo = s < lo ? s : lo;
-  s = __builtin_shuffle(hi, LaneMask{2, 3, 0, 1, 6, 7, 4, 5});
-  hi = s > hi ? s : hi;
-  s = __builtin_shuffle(lo, LaneMask{1, 0, 3, 2, 5, 4, 7, 6});
-  lo = s < lo ? s : lo;
-  s = __builtin_shuffle(hi, LaneMask{1, 0, 3, 2, 5, 4, 7, 6});
-  hi = s > hi ? s : hi;
-  least = lo[0];
-  greatest = hi[0];
 }
 
 /// All lanes equal to v.

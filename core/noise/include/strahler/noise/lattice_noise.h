@@ -29,24 +29,38 @@ public:
 
   /// Noise at base::kLanes points (x[l], y[l]); every lane must satisfy |x|, |y| < kLaneLimit.
   [[gnu::always_inline]] base::Doubles atLanes(base::Doubles px, base::Doubles py) const noexcept {
-    using base::Doubles;
+    return atLanes<base::kLanes>(px, py);
+  }
+
+  /// The same at W points held in vectors of W lanes (W = 2, 4, 8: see base::Vectors).
+  template <int W>
+  [[gnu::always_inline]] typename base::Vectors<W>::Doubles
+  atLanes(typename base::Vectors<W>::Doubles px,
+          typename base::Vectors<W>::Doubles py) const noexcept {
+    using Doubles = typename base::Vectors<W>::Doubles;
+    using Int32s = typename base::Vectors<W>::Int32s;
+    using Words = typename base::Vectors<W>::Words;
     // floor by truncation then correction (exact below kLaneLimit).
-    const Doubles tx = __builtin_convertvector(__builtin_convertvector(px, base::Int32s), Doubles);
-    const Doubles ty = __builtin_convertvector(__builtin_convertvector(py, base::Int32s), Doubles);
+    const Doubles tx = __builtin_convertvector(__builtin_convertvector(px, Int32s), Doubles);
+    const Doubles ty = __builtin_convertvector(__builtin_convertvector(py, Int32s), Doubles);
     const Doubles fx = tx > px ? tx - 1.0 : tx;
     const Doubles fy = ty > py ? ty - 1.0 : ty;
-    const Words cx = __builtin_convertvector(__builtin_convertvector(fx, base::Int32s), Words);
-    const Words cy = __builtin_convertvector(__builtin_convertvector(fy, base::Int32s), Words);
+    const Words cx = __builtin_convertvector(__builtin_convertvector(fx, Int32s), Words);
+    const Words cy = __builtin_convertvector(__builtin_convertvector(fy, Int32s), Words);
     return cellNoise(
         cx, cy, px - fx,
         py - fy, [this](Words h, Doubles dx, Doubles dy) __attribute__((always_inline)) {
-          return dotGradient(h, dx, dy);
+          return dotGradient<W>(h, dx, dy);
         });
   }
 
 private:
-  /// base::kLanes unsigned 32-bit words.
-  using Words = std::uint32_t __attribute__((vector_size(4 * base::kLanes)));
+  /// 16 doubles, as 8 vectors of 2, 4 of 4 and 2 of 8.
+  struct Table {
+    base::Vectors<2>::Doubles by2[8];
+    base::Vectors<4>::Doubles by4[4];
+    base::Vectors<8>::Doubles by8[2];
+  };
   static constexpr std::uint32_t kPrimeX = 0x8da6b343u;
   static constexpr std::uint32_t kPrimeY = 0xd8163841u;
 
@@ -77,16 +91,40 @@ private:
   template <class T> static T fade(T t) noexcept {
     return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
   }
-  [[gnu::always_inline]] base::Doubles dotGradient(Words h, base::Doubles x,
-                                                   base::Doubles y) const noexcept {
-    const auto index = __builtin_convertvector(mix(h), base::LaneMask);
-    return __builtin_shuffle(gradientX_[0], gradientX_[1], index) * x +
-           __builtin_shuffle(gradientY_[0], gradientY_[1], index) * y;
+  /// The gradient picked by hash h (of W lanes) dotted with (x, y): a lookup in the table of
+  /// 16 gradients held as vectors of W lanes, 2W entries per two-vector shuffle.
+  template <int W>
+  [[gnu::always_inline]] typename base::Vectors<W>::Doubles
+  dotGradient(typename base::Vectors<W>::Words h, typename base::Vectors<W>::Doubles x,
+              typename base::Vectors<W>::Doubles y) const noexcept {
+    using Doubles = typename base::Vectors<W>::Doubles;
+    using Int64s = typename base::Vectors<W>::Int64s;
+    const Int64s index = __builtin_convertvector(mix(h), Int64s);
+    const Doubles* gx = gradients<W>(gradientX_);
+    const Doubles* gy = gradients<W>(gradientY_);
+    Doubles ax = __builtin_shuffle(gx[0], gx[1], index),
+            ay = __builtin_shuffle(gy[0], gy[1], index);
+    for (int group = 1; group < 16 / (2 * W); ++group) {
+      const Int64s in = index / (2 * W) == group;
+      ax = in ? __builtin_shuffle(gx[2 * group], gx[2 * group + 1], index) : ax;
+      ay = in ? __builtin_shuffle(gy[2 * group], gy[2 * group + 1], index) : ay;
+    }
+    return ax * x + ay * y;
+  }
+  /// A table of 16 doubles as vectors of W lanes.
+  template <int W>
+  static const typename base::Vectors<W>::Doubles* gradients(const Table& table) noexcept {
+    if constexpr (W == 2)
+      return table.by2;
+    else if constexpr (W == 4)
+      return table.by4;
+    else
+      return table.by8;
   }
 
   std::uint32_t seed_ = 0;
-  // The 16 gradients: x components of entries 0-7 and 8-15, then the y components.
-  base::Doubles gradientX_[2]{}, gradientY_[2]{};
+  // The x and the y components of the 16 gradients, as vectors of each width.
+  Table gradientX_{}, gradientY_{};
 };
 
 } // namespace strahler::noise
