@@ -39,24 +39,6 @@ template <> struct Vectors<8> {
 
 /// kLanes doubles.
 using Doubles = Vectors<kLanes>::Doubles;
-/// kLanes lane masks (all bits set where a comparison holds), as comparisons of Doubles give.
-using LaneMask = Vectors<kLanes>::Int64s;
-/// kLanes 32-bit integers.
-using Int32s = Vectors<kLanes>::Int32s;
-
-/// Whether any lane of `m` is set (an OR across lanes by shuffles, kept in registers).
-[[gnu::always_inline]] inline bool anyLane(LaneMask m) noexcept {
-  static_assert(kLanes == 8);
-  m |= __builtin_shuffle(m, LaneMask{4, 5, 6, 7, 0, 1, 2, 3});
-  m |= __builtin_shuffle(m, LaneMask{2, 3, 0, 1, 6, 7, 4, 5});
-  m |= __builtin_shuffle(m, LaneMask{1, 0, 3, 2, 5, 4, 7, 6});
-  return m[0] != 0;
-}
-
-/// All lanes equal to v.
-[[gnu::always_inline]] inline Doubles splat(double v) noexcept {
-  return Doubles{} + v;
-}
 
 } // namespace strahler::base
 
