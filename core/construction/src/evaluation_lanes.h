@@ -57,8 +57,8 @@ inline constexpr std::size_t kChunk = 8;
 struct CurveLaneArgs {
   double radius = 0.0;
   geometry::Aabb support; ///< the river's support box
-  std::span<const geometry::Aabb>
-      chunks; ///< the box of each run of kChunk segments, up to the last run searched
+  /// The box of each run of kChunk segments, up to the last run searched.
+  std::span<const geometry::Aabb> chunks;
   std::size_t firstChunk = 0;                  ///< the first run searched
   std::span<const World::HotSegment> segments; ///< every segment of the curve
   const double* xs = nullptr;
