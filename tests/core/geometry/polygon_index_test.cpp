@@ -71,6 +71,28 @@ TEST(PolygonIndex, NearestBoundaryAgreesWithBruteForce) {
   }
 }
 
+TEST(PolygonIndex, SegmentsMeetingABoxAgreeWithBruteForce) {
+  const PolygonIndex index(wigglyLand());
+  base::Rng rng(6);
+  for (int i = 0; i < 500; ++i) {
+    const Vec2 c{rng.uniform(-25000, 25000), rng.uniform(-25000, 25000)};
+    const Aabb box = Aabb{c, c}.expanded(rng.uniform(0.0, 6000.0));
+    std::vector<std::uint32_t> expected;
+    for (std::uint32_t s = 0; s < index.segments().size(); ++s) {
+      Aabb b;
+      b.add(index.segments()[s].a);
+      b.add(index.segments()[s].b);
+      if (b.intersects(box))
+        expected.push_back(s);
+    }
+    std::vector<std::uint32_t> got{7u}; // appended after what is there
+    index.segmentsMeeting(box, got);
+    ASSERT_EQ(got.front(), 7u);
+    got.erase(got.begin());
+    ASSERT_EQ(got, expected) << "box around " << c.x << ", " << c.y; // once each, ascending
+  }
+}
+
 TEST(PolygonIndex, SegmentClearance) {
   const PolygonIndex index(wigglyLand());
   // A segment crossing the lake shore.
