@@ -15,7 +15,6 @@ namespace detail {
 namespace {
 
 namespace baseline { // SSE2, every x86-64: two doubles per register
-constexpr int kWidth = 2;
 #define STRAHLER_KERNEL_WIDTH 2
 #include "evaluation_kernels.inc"
 #undef STRAHLER_KERNEL_WIDTH
@@ -25,7 +24,6 @@ constexpr int kWidth = 2;
 // cost less split over four registers than done two lanes at a time (measured: zoom 18 tiles
 // 35 → 15 ms); every other kernel is faster two lanes at a time.
 namespace baselineNoise {
-constexpr int kWidth = 8;
 #define STRAHLER_KERNEL_WIDTH 8
 #include "evaluation_kernels.inc"
 #undef STRAHLER_KERNEL_WIDTH
@@ -34,7 +32,6 @@ constexpr int kWidth = 8;
 #pragma GCC push_options
 #pragma GCC target("avx2")
 namespace avx2 { // four doubles per register
-constexpr int kWidth = 4;
 #define STRAHLER_KERNEL_WIDTH 4
 #include "evaluation_kernels.inc"
 #undef STRAHLER_KERNEL_WIDTH
@@ -44,7 +41,6 @@ constexpr int kWidth = 4;
 #pragma GCC push_options
 #pragma GCC target("avx512f,avx512dq")
 namespace avx512 { // eight doubles per register
-constexpr int kWidth = 8;
 #define STRAHLER_KERNEL_WIDTH 8
 #include "evaluation_kernels.inc"
 #undef STRAHLER_KERNEL_WIDTH
