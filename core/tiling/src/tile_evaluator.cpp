@@ -305,9 +305,9 @@ TileEvaluator::BinShore TileEvaluator::shoreOf(const Aabb& box,
   if (distanceToBox(center, land.bounds()) >= shelf + halfDiagonal)
     return {Coast::kFarSea, false}; // cheap: far from the land's bounding box
   const bool inside = land.contains(center);
-  const geometry::BoundaryHit hit = land.nearestBoundary(center, shelf + halfDiagonal);
   const double reach = (inside ? construction::CoastShape::kBand : shelf) + halfDiagonal;
-  if (hit.distance >= reach)
+  const geometry::BoundaryHit hit = land.nearestBoundary(center, reach);
+  if (hit.segment < 0 || hit.distance >= reach)
     return {inside ? Coast::kInland : Coast::kFarSea, inside};
   BinShore shore;
   // No boundary within the box (with a margin far above rounding): every point lies on the
