@@ -14,6 +14,10 @@ LatticeNoise::LatticeNoise(std::uint64_t seed) noexcept
       t.by4[i / 4][i % 4] = g;
       t.by8[i / 8][i % 8] = g;
     }
+  for (int i = 0; i < 4; ++i) {
+    quadrantCos_[i] = detail::kGradients[i][0];
+    quadrantSin_[i] = detail::kGradients[i][1];
+  }
 }
 
 double LatticeNoise::at(geometry::Vec2 p) const noexcept {
