@@ -22,7 +22,7 @@ namespace baseline { // SSE2, every x86-64: two doubles per register
 
 // SSE2 again with vectors of eight: the noise's 32-bit multiplications and gradient lookups
 // cost less split over four registers than done two lanes at a time (measured: zoom 18 tiles
-// 35 → 15 ms); every other kernel is faster two lanes at a time.
+// 35 → 14 ms); every other kernel is faster two lanes at a time.
 namespace baselineNoise {
 #define STRAHLER_KERNEL_WIDTH 8
 #include "evaluation_kernels.inc"

@@ -11,7 +11,6 @@ LatticeNoise::LatticeNoise(std::uint64_t seed) noexcept
       Table& t = axis == 0 ? gradientX_ : gradientY_;
       const double g = detail::kGradients[i][axis];
       t.by2[i / 2][i % 2] = g;
-      t.by4[i / 4][i % 4] = g;
       t.by8[i / 8][i % 8] = g;
     }
   for (int i = 0; i < 4; ++i) {

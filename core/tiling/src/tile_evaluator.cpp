@@ -350,24 +350,25 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
     // The block's primitives lie within its influence box: their bins are among its bins,
     // and where that is one bin they all go there (extra candidates are harmless).
     const Bins::Range range = bins.rangeOf(blocks_.influence(b));
-    const bool oneBin = range.size() == 1 && bins.monotone();
-    for (std::uint32_t i = r.terrainBegin; i < r.terrainEnd && oneBin; ++i)
-      bins.addTerrain(bins.at(range.i0, range.j0), i);
-    for (std::uint32_t i = r.terrainBegin; i < r.terrainEnd && !oneBin && range.size() > 0; ++i) {
-      const primitives::TerrainPrimitive& t = data.terrain[i];
-      // Squared, without hypot: the slack (1e-9 relative) only ever admits extra candidates,
-      // which are harmless (w = 0 beyond the radius).
-      const double reach2 = t.radius * t.radius * (1.0 + 1e-9);
-      const Aabb support = Aabb{t.center, t.center}.expanded(t.radius);
-      if (!bins.monotone()) {
-        bins.forEachBin(
-            support, [&](const Aabb& box) { return distanceToBox2(t.center, box) <= reach2; },
-            [&](std::size_t bin) { bins.addTerrain(bin, i); });
-        continue;
+    if (range.size() == 1 && bins.monotone())
+      for (std::uint32_t i = r.terrainBegin; i < r.terrainEnd; ++i)
+        bins.addTerrain(bins.at(range.i0, range.j0), i);
+    else if (range.size() > 0)
+      for (std::uint32_t i = r.terrainBegin; i < r.terrainEnd; ++i) {
+        const primitives::TerrainPrimitive& t = data.terrain[i];
+        // Squared, without hypot: the slack (1e-9 relative) only ever admits extra candidates,
+        // which are harmless (w = 0 beyond the radius).
+        const double reach2 = t.radius * t.radius * (1.0 + 1e-9);
+        const Aabb support = Aabb{t.center, t.center}.expanded(t.radius);
+        if (!bins.monotone()) {
+          bins.forEachBin(
+              support, [&](const Aabb& box) { return distanceToBox2(t.center, box) <= reach2; },
+              [&](std::size_t bin) { bins.addTerrain(bin, i); });
+          continue;
+        }
+        bins.addTerrainDisc(range.size() <= kScanBins ? range : bins.rangeOf(support), t.center,
+                            reach2, i);
       }
-      bins.addTerrainDisc(range.size() <= kScanBins ? range : bins.rangeOf(support), t.center,
-                          reach2, i);
-    }
     for (std::uint32_t i = r.riverBegin; i < r.riverEnd; ++i) {
       // A bin no run of the curve comes within reach of gets w = 0 from this river.
       const auto always = [](const Aabb&) { return true; };

@@ -55,10 +55,9 @@ public:
   }
 
 private:
-  /// 16 doubles, as 8 vectors of 2, 4 of 4 and 2 of 8.
+  /// 16 doubles, as 8 vectors of 2 and 2 of 8.
   struct Table {
     base::Vectors<2>::Doubles by2[8];
-    base::Vectors<4>::Doubles by4[4];
     base::Vectors<8>::Doubles by8[2];
   };
   static constexpr std::uint32_t kPrimeX = 0x8da6b343u;
@@ -112,25 +111,25 @@ private:
       u = negateU ? -u : u;
       v = negateV ? -v : v;
       return p * u + s * v;
+    } else {
+      const Doubles* gx = gradients<W>(gradientX_);
+      const Doubles* gy = gradients<W>(gradientY_);
+      Doubles ax = __builtin_shuffle(gx[0], gx[1], index),
+              ay = __builtin_shuffle(gy[0], gy[1], index);
+      for (int group = 1; group < 16 / (2 * W); ++group) {
+        const Int64s in = index / (2 * W) == group;
+        ax = in ? __builtin_shuffle(gx[2 * group], gx[2 * group + 1], index) : ax;
+        ay = in ? __builtin_shuffle(gy[2 * group], gy[2 * group + 1], index) : ay;
+      }
+      return ax * x + ay * y;
     }
-    const Doubles* gx = gradients<W>(gradientX_);
-    const Doubles* gy = gradients<W>(gradientY_);
-    Doubles ax = __builtin_shuffle(gx[0], gx[1], index),
-            ay = __builtin_shuffle(gy[0], gy[1], index);
-    for (int group = 1; group < 16 / (2 * W); ++group) {
-      const Int64s in = index / (2 * W) == group;
-      ax = in ? __builtin_shuffle(gx[2 * group], gx[2 * group + 1], index) : ax;
-      ay = in ? __builtin_shuffle(gy[2 * group], gy[2 * group + 1], index) : ay;
-    }
-    return ax * x + ay * y;
   }
-  /// A table of 16 doubles as vectors of W lanes.
+  /// A table of 16 doubles as vectors of W lanes (W = 2 or 8; four lanes use the quadrant).
   template <int W>
   static const typename base::Vectors<W>::Doubles* gradients(const Table& table) noexcept {
+    static_assert(W == 2 || W == 8);
     if constexpr (W == 2)
       return table.by2;
-    else if constexpr (W == 4)
-      return table.by4;
     else
       return table.by8;
   }
