@@ -56,6 +56,7 @@ inline constexpr std::size_t kChunk = 8;
 /// fraction of the way along it.
 struct CurveLaneArgs {
   double radius = 0.0;
+  double reach = 0.0;     ///< World::riverReach(): the radius with a margin above rounding
   geometry::Aabb support; ///< the river's support box
   /// The box of each run of kChunk segments, up to the last run searched.
   std::span<const geometry::Aabb> chunks;

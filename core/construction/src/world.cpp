@@ -70,11 +70,8 @@ World::World(WorldData data)
     for (std::size_t k = 0; k + 1 < curve.size(); ++k) {
       const Vec2 a = curve[k].position, ab = curve[k + 1].position - a;
       const double length2 = lengthSquared(ab);
-      geometry::Aabb box;
-      box.add(a);
-      box.add(curve[k + 1].position);
       hotSegments_.push_back({a, ab, length2 > 0.0 ? 1.0 / length2 : 0.0, curve[k].elevation,
-                              curve[k + 1].elevation - curve[k].elevation, box});
+                              curve[k + 1].elevation - curve[k].elevation});
     }
     riverGrid_.insert(riverSupport_.back(), i);
   }
@@ -139,6 +136,7 @@ void World::riversLanes(std::size_t lanes, const double* xs, const double* ys,
     const primitives::RiverPrimitive& r = data_.rivers[i];
     const HotSegment* segments = hotSegments_.data() + segmentBegin_[i];
     const detail::CurveLaneArgs args{r.radius,
+                                     riverReach(i),
                                      riverSupport_[i],
                                      std::span(riverChunks_[i]).subspan(0, c.endChunk),
                                      c.firstChunk,

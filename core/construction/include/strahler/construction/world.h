@@ -134,7 +134,6 @@ public:
     double inverseLength2 = 0.0; ///< 1 / |ab|² (0 for a segment of length 0)
     double elevation = 0.0;      ///< water elevation at the start
     double rise = 0.0;           ///< water elevation at the end − at the start
-    geometry::Aabb box;          ///< bounding box
   };
   /// Largest fBm gain evaluated (keeps octave amplitudes decreasing).
   static constexpr double kMaxRoughness = 0.95;
