@@ -15,6 +15,9 @@ using Point = bg::model::point<double, 2, bg::cs::cartesian>;
 using Box = bg::model::box<Point>;
 using Entry = std::pair<Box, std::uint32_t>;
 
+/// Up to this many blocks found are sorted; more are collected in order by marking.
+constexpr std::size_t kSortedBelow = 256;
+
 Box toBox(const geometry::Aabb& a) {
   return {{a.min.x, a.min.y}, {a.max.x, a.max.y}};
 }
@@ -55,7 +58,22 @@ std::vector<std::uint32_t> BlockIndex::blocksMeeting(const geometry::Aabb& box) 
   tree_->rtree.query(bgi::intersects(toBox(box)),
                      boost::iterators::make_function_output_iterator(
                          [&](const Entry& e) { out.push_back(e.second); }));
-  std::sort(out.begin(), out.end());
+  if (out.size() <= kSortedBelow) {
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+  // Many blocks: marked and collected in one pass (sorting thousands of ids in the tree's
+  // order costs a mispredicted branch per comparison).
+  std::vector<char> found(influence_.size(), 0);
+  for (const std::uint32_t b : out)
+    found[b] = 1;
+  out.resize(found.size());
+  std::size_t n = 0;
+  for (std::uint32_t b = 0; b < found.size(); ++b) { // without a branch per block
+    out[n] = b;
+    n += static_cast<std::size_t>(found[b]);
+  }
+  out.resize(n);
   return out;
 }
 
