@@ -88,11 +88,11 @@ R runBuild(R (*base)(const Args&) noexcept, R (*withAvx2)(const Args&) noexcept,
 
 } // namespace
 
-bool closestOnCurveLanes(const CurveLaneArgs& args) noexcept {
+unsigned closestOnCurveLanes(const CurveLaneArgs& args) noexcept {
   return runBuild(baseline::curveLanes, avx2::curveLanes, avx512::curveLanes, args);
 }
 
-bool closestOnCurvePoint(const CurveLaneArgs& args) noexcept {
+unsigned closestOnCurvePoint(const CurveLaneArgs& args) noexcept {
   return baseline::curveKernel<baseline::Single>(args, 0);
 }
 

@@ -70,11 +70,11 @@ struct CurveLaneArgs {
 };
 
 /// The closest-point search compiled for the instruction set in use (same bits on each);
-/// returns whether any point came within the river's radius.
-bool closestOnCurveLanes(const CurveLaneArgs& args) noexcept;
+/// returns the points that came within the river's radius (bit l: point l).
+unsigned closestOnCurveLanes(const CurveLaneArgs& args) noexcept;
 /// The closest-point search for one point (lane 0 of the arguments) in scalar registers: the
 /// same bits as a lane of closestOnCurveLanes().
-bool closestOnCurvePoint(const CurveLaneArgs& args) noexcept;
+unsigned closestOnCurvePoint(const CurveLaneArgs& args) noexcept;
 
 /// One nearest-segment search for base::kLanes points (xs, ys) over the segments `ids` of
 /// `segments`: best2[l] becomes the least of itself and each segment's squared distance, as

@@ -146,9 +146,11 @@ void World::riversLanes(std::size_t lanes, const double* xs, const double* ys,
                                      distance.data(),
                                      segment.data(),
                                      along.data()};
-    if (lanes == 1 ? !detail::closestOnCurvePoint(args) : !detail::closestOnCurveLanes(args))
-      continue; // no point within the river's radius
-    for (std::size_t l = 0; l < lanes; ++l) {
+    // The points within the river's radius, one bit each: visited without a branch per point.
+    for (unsigned found = lanes == 1 ? detail::closestOnCurvePoint(args)
+                                     : detail::closestOnCurveLanes(args);
+         found != 0; found &= found - 1) {
+      const auto l = static_cast<std::size_t>(__builtin_ctz(found));
       const double d = distance[l];
       if (!(d < r.radius))
         continue; // not searched, or w = 0

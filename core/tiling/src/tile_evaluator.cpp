@@ -181,22 +181,25 @@ public:
 
   /// Adds terrain primitive `id` to the list of `bin`. Lists keep the order of addition;
   /// finish() must follow the last addition.
-  void addTerrain(std::size_t bin, std::uint32_t id) { terrainPairs_.push_back({bin, id}); }
+  void addTerrain(std::size_t bin, std::uint32_t id) {
+    roomForTerrain(1);
+    terrainPairs_[terrainCount_++] = {static_cast<std::uint32_t>(bin), id};
+  }
   /// Adds terrain primitive `id` to every bin of `range` (monotone bins) whose box its disc
   /// (centre, squared radius with slack) meets; without a branch per bin, which would be
   /// mispredicted about every other time.
   void addTerrainDisc(const Range& range, Vec2 center, double reach2, std::uint32_t id) {
-    std::size_t n = terrainPairs_.size();
-    terrainPairs_.resize(n + static_cast<std::size_t>(range.size()));
+    roomForTerrain(static_cast<std::size_t>(range.size()));
+    std::size_t n = terrainCount_;
     for (int j = range.j0; j < range.j1; ++j)
       for (int i = range.i0; i < range.i1; ++i) {
         const Aabb& b = box(i, j); // empty boxes are +inf..-inf: never met
-        const double dx = std::max({b.min.x - center.x, 0.0, center.x - b.max.x});
-        const double dy = std::max({b.min.y - center.y, 0.0, center.y - b.max.y});
+        const double dx = std::max(std::max(b.min.x - center.x, 0.0), center.x - b.max.x);
+        const double dy = std::max(std::max(b.min.y - center.y, 0.0), center.y - b.max.y);
         terrainPairs_[n] = {static_cast<std::uint32_t>(at(i, j)), id};
         n += static_cast<std::size_t>(dx * dx + dy * dy <= reach2);
       }
-    terrainPairs_.resize(n);
+    terrainCount_ = n;
   }
   /// Adds runs [first, end) of river primitive `id`'s curve to `bin`: rivers must come in
   /// ascending order and each river's runs ascending.
@@ -210,6 +213,7 @@ public:
     riverPairs_.push_back({static_cast<std::uint32_t>(bin), {id, first, end}});
   }
   void finish() {
+    terrainPairs_.resize(terrainCount_);
     sortByBin(terrainPairs_, terrainBegin_, terrain_);
     sortByBin(riverPairs_, riverBegin_, rivers_);
   }
@@ -246,7 +250,16 @@ private:
   std::vector<Aabb> boxes_;
   std::optional<IntervalRun> columns_, rows_run_;
   std::vector<std::size_t> reachable_; // bins meeting `reach`, when not monotone
-  Pairs<std::uint32_t> terrainPairs_;
+  /// Makes room for `more` terrain pairs after the first terrainCount_ (pairs are written
+  /// in place, and the vector grows only now and then: resizing per primitive would clear
+  /// each new pair first).
+  void roomForTerrain(std::size_t more) {
+    if (terrainPairs_.size() < terrainCount_ + more)
+      terrainPairs_.resize(std::max(terrainCount_ + more, 2 * terrainPairs_.size()));
+  }
+
+  Pairs<std::uint32_t> terrainPairs_; // the first terrainCount_ are in use
+  std::size_t terrainCount_ = 0;
   Pairs<construction::World::RiverCandidate> riverPairs_;
   std::vector<std::size_t> lastRiver_; // per bin: its last entry in riverPairs_, or kNone
   std::vector<std::uint32_t> terrainBegin_, riverBegin_, terrain_;
@@ -255,14 +268,14 @@ private:
 
 /// Squared distance from p to box b (0 inside).
 double distanceToBox2(Vec2 p, const Aabb& b) {
-  const double dx = std::max({b.min.x - p.x, 0.0, p.x - b.max.x});
-  const double dy = std::max({b.min.y - p.y, 0.0, p.y - b.max.y});
+  const double dx = std::max(std::max(b.min.x - p.x, 0.0), p.x - b.max.x);
+  const double dy = std::max(std::max(b.min.y - p.y, 0.0), p.y - b.max.y);
   return dx * dx + dy * dy;
 }
 
 double distanceToBox(Vec2 p, const Aabb& b) {
-  const double dx = std::max({b.min.x - p.x, 0.0, p.x - b.max.x});
-  const double dy = std::max({b.min.y - p.y, 0.0, p.y - b.max.y});
+  const double dx = std::max(std::max(b.min.x - p.x, 0.0), p.x - b.max.x);
+  const double dy = std::max(std::max(b.min.y - p.y, 0.0), p.y - b.max.y);
   return std::hypot(dx, dy);
 }
 
