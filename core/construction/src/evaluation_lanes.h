@@ -17,24 +17,29 @@ struct OctaveFades {
   std::array<double, NoiseOctaves::kOctaves> fade{};
 };
 
-/// The weighted sums of the terrain blend, base::kLanes each.
+/// Points of one call of the terrain blend at most: two groups of base::kLanes (two runs of
+/// samples that share their candidates).
+inline constexpr std::size_t kTerrainLanes = 2 * base::kLanes;
+
+/// The weighted sums of the terrain blend, kTerrainLanes each.
 struct TerrainSums {
-  alignas(64) double weight[base::kLanes];
-  alignas(64) double height[base::kLanes];
-  alignas(64) double amplitude[base::kLanes];
-  alignas(64) double roughness[base::kLanes];
-  alignas(64) double count[base::kLanes];
+  alignas(64) double weight[kTerrainLanes];
+  alignas(64) double height[kTerrainLanes];
+  alignas(64) double amplitude[kTerrainLanes];
+  alignas(64) double roughness[kTerrainLanes];
+  alignas(64) double count[kTerrainLanes];
 };
 
-/// One call of the terrain blend: base::kLanes points (xs, ys) and their shared candidates;
-/// results go to h and w (kLanes each).
+/// One call of the terrain blend: `groups` groups (1 or 2) of base::kLanes points, group g at
+/// points[g], with their shared candidates; results go to h and w, groups · kLanes each,
+/// group after group.
 struct TerrainLaneArgs {
   const World::HotTerrain* hot = nullptr;
   std::span<const std::uint32_t> ids;
-  const OctaveFades* fades = nullptr;
+  std::array<const OctaveFades*, 2> fades{}; ///< of each group's spacing
   const noise::LatticeNoise* noise = nullptr;
-  const double* xs = nullptr;
-  const double* ys = nullptr;
+  std::array<const geometry::Vec2*, 2> points{};
+  std::size_t groups = 1;
   double* h = nullptr;
   double* w = nullptr;
   TerrainSums* sums = nullptr; ///< scratch for the sums
@@ -42,14 +47,14 @@ struct TerrainLaneArgs {
 
 /// The terrain blend compiled for the instruction set in use (same bits on each).
 void terrainLanes(const TerrainLaneArgs& args) noexcept;
-/// The terrain blend at one point (xs[0], ys[0]) in scalar registers, into h[0] and w[0]:
+/// The terrain blend at one point (points[0][0]) in scalar registers, into h[0] and w[0]:
 /// the same bits as a lane of terrainLanes().
 void terrainPoint(const TerrainLaneArgs& args) noexcept;
 
 /// Segments of a river curve per chunk box (World keeps one box per run of kChunk segments).
 inline constexpr std::size_t kChunk = 8;
 
-/// One closest-point search on a river curve for base::kLanes points (xs, ys); points outside
+/// One closest-point search on a river curve for base::kLanes points; points outside
 /// the support box are not searched, nor runs of the curve before firstChunk or after the
 /// chunks given. Results per lane: the distance to the curve (infinity when not searched or
 /// not nearer than the radius) and, where finite, the segment of the closest point and the
@@ -62,8 +67,7 @@ struct CurveLaneArgs {
   std::span<const geometry::Aabb> chunks;
   std::size_t firstChunk = 0;                  ///< the first run searched
   std::span<const World::HotSegment> segments; ///< every segment of the curve
-  const double* xs = nullptr;
-  const double* ys = nullptr;
+  const geometry::Vec2* points = nullptr;
   double* distance = nullptr;
   std::int64_t* segment = nullptr;
   double* along = nullptr;
@@ -76,14 +80,13 @@ unsigned closestOnCurveLanes(const CurveLaneArgs& args) noexcept;
 /// same bits as a lane of closestOnCurveLanes().
 unsigned closestOnCurvePoint(const CurveLaneArgs& args) noexcept;
 
-/// One nearest-segment search for base::kLanes points (xs, ys) over the segments `ids` of
+/// One nearest-segment search for base::kLanes points over the segments `ids` of
 /// `segments`: best2[l] becomes the least of itself and each segment's squared distance, as
 /// geometry::closestPointOnSegment and lengthSquared compute it.
 struct SegmentLaneArgs {
   const geometry::BoundarySegment* segments = nullptr;
   std::span<const std::uint32_t> ids;
-  const double* xs = nullptr;
-  const double* ys = nullptr;
+  const geometry::Vec2* points = nullptr;
   double* best2 = nullptr;
 };
 

@@ -99,32 +99,51 @@ double World::riverReach(std::uint32_t i) const noexcept {
   return data_.rivers[i].radius * (1.0 + 1e-9) + 1e-6;
 }
 
-void World::terrainLanes(std::size_t lanes, const double* xs, const double* ys, double spacing,
-                         std::span<const std::uint32_t> ids, double* h, double* w) const noexcept {
-  // The octaves that survive the LOD fade at this spacing (they get shorter, so a prefix)
-  // and their fades: each costs a division, and callers sweep rows of equal spacing, so they
-  // are kept per thread for the last spacing seen (a pure function of it: same values).
-  thread_local detail::OctaveFades fades{std::numeric_limits<double>::quiet_NaN(), 0, {}};
-  if (!(fades.spacing == spacing)) {
-    int active = 0;
-    for (double wavelength = NoiseOctaves::kLongest;
-         active < NoiseOctaves::kOctaves && octaveFade(wavelength, spacing) > 0.0;
-         wavelength *= 0.5) {
-      fades.fade[static_cast<std::size_t>(active)] = octaveFade(wavelength, spacing);
-      ++active;
-    }
-    fades.active = active;
-    fades.spacing = spacing;
+namespace {
+
+/// The octaves that survive the LOD fade at `spacing` (they get shorter, so a prefix) and
+/// their fades. Each costs a division, and callers sweep rows of equal spacing (or pairs of
+/// rows), so the last two are kept per thread (a pure function of the spacing: same values).
+const detail::OctaveFades& fadesAt(double spacing) noexcept {
+  thread_local std::array<detail::OctaveFades, 2> kept{
+      {{std::numeric_limits<double>::quiet_NaN(), 0, {}},
+       {std::numeric_limits<double>::quiet_NaN(), 0, {}}}};
+  thread_local std::size_t older = 0;
+  for (const detail::OctaveFades& f : kept)
+    if (f.spacing == spacing)
+      return f;
+  detail::OctaveFades& fades = kept[older];
+  older ^= 1;
+  int active = 0;
+  for (double wavelength = NoiseOctaves::kLongest;
+       active < NoiseOctaves::kOctaves && octaveFade(wavelength, spacing) > 0.0;
+       wavelength *= 0.5) {
+    fades.fade[static_cast<std::size_t>(active)] = octaveFade(wavelength, spacing);
+    ++active;
   }
+  fades.active = active;
+  fades.spacing = spacing;
+  return fades;
+}
+
+} // namespace
+
+void World::terrainLanes(std::size_t lanes, const Vec2* first, const Vec2* second,
+                         std::array<double, 2> spacing, std::span<const std::uint32_t> ids,
+                         double* h, double* w) const noexcept {
+  const detail::OctaveFades& firstFades = fadesAt(spacing[0]);
+  const detail::OctaveFades& secondFades = second ? fadesAt(spacing[1]) : firstFades;
   detail::TerrainSums sums;
-  const detail::TerrainLaneArgs args{hot_.data(), ids, &fades, &noise_, xs, ys, h, w, &sums};
+  const detail::TerrainLaneArgs args{
+      hot_.data(), ids,  {&firstFades, &secondFades}, &noise_, {first, second}, second ? 2u : 1u, h,
+      w,           &sums};
   if (lanes == 1)
     detail::terrainPoint(args);
   else
     detail::terrainLanes(args);
 }
 
-void World::riversLanes(std::size_t lanes, const double* xs, const double* ys,
+void World::riversLanes(std::size_t lanes, const Vec2* points,
                         std::span<const RiverCandidate> rivers, Sample* out) const noexcept {
   constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
   std::array<double, kLanes> distance, along;
@@ -135,17 +154,12 @@ void World::riversLanes(std::size_t lanes, const double* xs, const double* ys,
     const std::uint32_t i = c.id;
     const primitives::RiverPrimitive& r = data_.rivers[i];
     const HotSegment* segments = hotSegments_.data() + segmentBegin_[i];
-    const detail::CurveLaneArgs args{r.radius,
-                                     riverReach(i),
-                                     riverSupport_[i],
-                                     std::span(riverChunks_[i]).subspan(0, c.endChunk),
-                                     c.firstChunk,
-                                     {segments, r.curve.size() - 1},
-                                     xs,
-                                     ys,
-                                     distance.data(),
-                                     segment.data(),
-                                     along.data()};
+    const detail::CurveLaneArgs args{
+        r.radius,         riverReach(i),
+        riverSupport_[i], std::span(riverChunks_[i]).subspan(0, c.endChunk),
+        c.firstChunk,     {segments, r.curve.size() - 1},
+        points,           distance.data(),
+        segment.data(),   along.data()};
     // The points within the river's radius, one bit each: visited without a branch per point.
     for (unsigned found = lanes == 1 ? detail::closestOnCurvePoint(args)
                                      : detail::closestOnCurveLanes(args);
@@ -217,8 +231,8 @@ World::Evaluation World::evaluateFrom(Vec2 p, double spacing,
                                       Coast coast) const noexcept {
   double h = 0.0, w = 0.0;
   Sample river;
-  terrainLanes(1, &p.x, &p.y, spacing, terrain, &h, &w);
-  riversLanes(1, &p.x, &p.y, rivers, &river);
+  terrainLanes(1, &p, nullptr, {spacing, spacing}, terrain, &h, &w);
+  riversLanes(1, &p, rivers, &river);
   Evaluation e;
   e.terrain = {h, w};
   e.rivers = river;
@@ -253,33 +267,59 @@ void World::heightsFrom(std::span<const Vec2> points, double spacing,
                         std::span<const RiverCandidate> rivers, const Shore& shore,
                         std::span<double> heights) const noexcept {
   constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
-  std::array<double, kLanes> xs, ys, h, w, shore2;
-  std::array<Sample, kLanes> river;
+  std::array<double, kLanes> h, w;
+  std::array<Vec2, kLanes> padded;
   for (std::size_t begin = 0; begin < points.size(); begin += kLanes) {
     const std::size_t n = std::min(kLanes, points.size() - begin);
-    for (std::size_t l = 0; l < kLanes; ++l) { // short groups repeat their last point
-      const Vec2 p = points[begin + std::min(l, n - 1)];
-      xs[l] = p.x;
-      ys[l] = p.y;
+    const Vec2* group = points.data() + begin;
+    if (n < kLanes) { // short groups repeat their last point
+      for (std::size_t l = 0; l < kLanes; ++l)
+        padded[l] = group[std::min(l, n - 1)];
+      group = padded.data();
     }
-    terrainLanes(kLanes, xs.data(), ys.data(), spacing, terrain, h.data(), w.data());
-    riversLanes(kLanes, xs.data(), ys.data(), rivers, river.data());
-    if (shore.coast != Coast::kUnknown || !shore.segments) {
-      for (std::size_t l = 0; l < n; ++l)
-        heights[begin + l] = shapeCoast(points[begin + l], {h[l], w[l]}, river[l], shore.coast);
-      continue;
-    }
-    // The squared distance to the nearest of the candidate segments, as the land index would
-    // find it (the same minimum of the same per-segment values), up to the shelf's reach.
-    shore2.fill(kShelfReach * kShelfReach);
-    detail::nearestSegmentLanes(
-        {land_.segments().data(), *shore.segments, xs.data(), ys.data(), shore2.data()});
-    for (std::size_t l = 0; l < n; ++l) {
-      const bool onLand = shore.onLand ? *shore.onLand : land_.contains(points[begin + l]);
-      const double limit = onLand ? CoastShape::kBand : kShelfReach;
-      const double d = shore2[l] < limit * limit ? std::sqrt(shore2[l]) : limit;
-      heights[begin + l] = shapeCoast({h[l], w[l]}, river[l], onLand, d);
-    }
+    terrainLanes(kLanes, group, nullptr, {spacing, spacing}, terrain, h.data(), w.data());
+    finishGroup(group, h.data(), w.data(), rivers, shore, heights.subspan(begin, n));
+  }
+}
+
+void World::heightsFrom(const PointRun& first, const PointRun& second,
+                        std::span<const std::uint32_t> terrain, const Shore& shore) const noexcept {
+  constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
+  if (first.points.size() != kLanes || second.points.size() != kLanes) {
+    heightsFrom(first.points, first.spacing, terrain, first.rivers, shore, first.heights);
+    heightsFrom(second.points, second.spacing, terrain, second.rivers, shore, second.heights);
+    return;
+  }
+  std::array<double, 2 * kLanes> h, w;
+  terrainLanes(kLanes, first.points.data(), second.points.data(), {first.spacing, second.spacing},
+               terrain, h.data(), w.data());
+  finishGroup(first.points.data(), h.data(), w.data(), first.rivers, shore, first.heights);
+  finishGroup(second.points.data(), h.data() + kLanes, w.data() + kLanes, second.rivers, shore,
+              second.heights);
+}
+
+void World::finishGroup(const Vec2* group, const double* h, const double* w,
+                        std::span<const RiverCandidate> rivers, const Shore& shore,
+                        std::span<double> heights) const noexcept {
+  constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
+  std::array<Sample, kLanes> river;
+  riversLanes(kLanes, group, rivers, river.data());
+  const std::size_t n = heights.size();
+  if (shore.coast != Coast::kUnknown || !shore.segments) {
+    for (std::size_t l = 0; l < n; ++l)
+      heights[l] = shapeCoast(group[l], {h[l], w[l]}, river[l], shore.coast);
+    return;
+  }
+  // The squared distance to the nearest of the candidate segments, as the land index would
+  // find it (the same minimum of the same per-segment values), up to the shelf's reach.
+  std::array<double, kLanes> shore2;
+  shore2.fill(kShelfReach * kShelfReach);
+  detail::nearestSegmentLanes({land_.segments().data(), *shore.segments, group, shore2.data()});
+  for (std::size_t l = 0; l < n; ++l) {
+    const bool onLand = shore.onLand ? *shore.onLand : land_.contains(group[l]);
+    const double limit = onLand ? CoastShape::kBand : kShelfReach;
+    const double d = shore2[l] < limit * limit ? std::sqrt(shore2[l]) : limit;
+    heights[l] = shapeCoast({h[l], w[l]}, river[l], onLand, d);
   }
 }
 

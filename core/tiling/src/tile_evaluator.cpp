@@ -412,28 +412,43 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
       shores[static_cast<std::size_t>(j) * static_cast<std::size_t>(bins.perRow()) +
              static_cast<std::size_t>(i)] = shoreOf(bins.box(i, j), shoreSegments);
   const auto width = static_cast<std::size_t>(grid.width);
-  for (int row = 0; row < grid.height; ++row) {
-    const double spacing = grid.rowSpacing[static_cast<std::size_t>(row)];
+  // The run of samples from (row, col) with its spacing, river candidates and heights.
+  const auto runAt = [&](int row, int col) {
+    const std::size_t k = static_cast<std::size_t>(row) * width + static_cast<std::size_t>(col);
+    const std::size_t n =
+        std::min(static_cast<std::size_t>(base::kLanes), width - static_cast<std::size_t>(col));
+    return construction::World::PointRun{{grid.points.data() + k, n},
+                                         grid.rowSpacing[static_cast<std::size_t>(row)],
+                                         riverBins.rivers(riverBins.binOf(row, col)),
+                                         {heights.data() + k, n}};
+  };
+  for (int row = 0; row < grid.height;) {
+    // Two rows of one bin share their terrain candidates: their runs are evaluated in pairs.
+    const bool paired = row + 1 < grid.height && bins.binOf(row + 1, 0) == bins.binOf(row, 0);
     for (int col = 0; col < grid.width; col += base::kLanes) {
-      const std::size_t k = static_cast<std::size_t>(row) * width + static_cast<std::size_t>(col);
-      const std::size_t n =
-          std::min(static_cast<std::size_t>(base::kLanes), width - static_cast<std::size_t>(col));
       const std::size_t bin = bins.binOf(row, col);
+      const construction::World::PointRun first = runAt(row, col);
       if (bins.terrain(bin).size() > kDenseBin) {
         // Samples kilometres apart (low zooms): each point's own cell of the world's index
         // holds far fewer candidates than the bin.
-        for (std::size_t l = 0; l < n; ++l)
-          heights[k + l] = world_.height(grid.points[k + l], spacing);
+        for (int r = row; r < row + (paired ? 2 : 1); ++r) {
+          const construction::World::PointRun run = runAt(r, col);
+          for (std::size_t l = 0; l < run.points.size(); ++l)
+            run.heights[l] = world_.height(run.points[l], run.spacing);
+        }
         continue;
       }
       const BinShore& s = shores[bin];
       const construction::World::Shore shore{
           s.coast, s.onLand,
           std::span<const std::uint32_t>(shoreSegments).subspan(s.begin, s.count)};
-      world_.heightsFrom({grid.points.data() + k, n}, spacing, bins.terrain(bin),
-                         riverBins.rivers(riverBins.binOf(row, col)), shore,
-                         {heights.data() + k, n});
+      if (paired)
+        world_.heightsFrom(first, runAt(row + 1, col), bins.terrain(bin), shore);
+      else
+        world_.heightsFrom(first.points, first.spacing, bins.terrain(bin), first.rivers, shore,
+                           first.heights);
     }
+    row += paired ? 2 : 1;
   }
   if (stats)
     *stats = local;

@@ -1,5 +1,6 @@
 #include "test_worlds.h"
 
+#include "strahler/base/lanes.h"
 #include "strahler/base/random.h"
 #include "strahler/construction/world.h"
 #include "strahler/construction/world_builder.h"
@@ -130,6 +131,38 @@ TEST(World, BatchedHeightsEqualSingleHeights) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     const double single = world.height(points[i], 3.0);
     ASSERT_EQ(std::memcmp(&batched[i], &single, sizeof single), 0) << "point " << i;
+  }
+}
+
+TEST(World, PairedRunsEqualSingleHeights) {
+  // Two runs sharing every terrain candidate, each with its own spacing and rivers: the
+  // terrain sums of both in one pass must give each point its own height bit for bit.
+  const World& world = defaultWorld();
+  const geometry::Aabb box = world.land().bounds();
+  std::vector<std::uint32_t> terrain(world.data().terrain.size());
+  for (std::uint32_t i = 0; i < terrain.size(); ++i)
+    terrain[i] = i;
+  std::vector<World::RiverCandidate> rivers;
+  for (std::uint32_t i = 0; i < world.data().rivers.size(); ++i)
+    rivers.push_back(world.wholeRiver(i));
+  constexpr std::size_t kRun = base::kLanes;
+  for (int pair = 0; pair < 40; ++pair) {
+    std::vector<Vec2> first, second;
+    for (std::size_t l = 0; l < kRun; ++l) {
+      const Vec2 p = box.min + Vec2{box.size().x * (0.05 + pair / 45.0) + 37.0 * l,
+                                    box.size().y * (0.1 + pair / 50.0)};
+      first.push_back(p);
+      second.push_back(p + Vec2{3.0, -41.0});
+    }
+    std::vector<double> a(kRun), b(kRun);
+    world.heightsFrom({first, 2.0, rivers, a}, {second, 6.0, rivers, b}, terrain, {});
+    for (std::size_t l = 0; l < kRun; ++l) {
+      const double singleA = world.height(first[l], 2.0), singleB = world.height(second[l], 6.0);
+      ASSERT_EQ(std::memcmp(&a[l], &singleA, sizeof singleA), 0)
+          << "pair " << pair << " lane " << l;
+      ASSERT_EQ(std::memcmp(&b[l], &singleB, sizeof singleB), 0)
+          << "pair " << pair << " lane " << l;
+    }
   }
 }
 

@@ -118,6 +118,21 @@ public:
                    std::span<const std::uint32_t> terrain, std::span<const RiverCandidate> rivers,
                    const Shore& shore, std::span<double> heights) const noexcept;
 
+  /// One run of points for heightsFrom(): at most base::kLanes points sharing a spacing,
+  /// their river candidates (as heightsFrom() asks) and where their heights go
+  /// (points.size() elements).
+  struct PointRun {
+    std::span<const geometry::Vec2> points;
+    double spacing = 0.0;
+    std::span<const RiverCandidate> rivers;
+    std::span<double> heights;
+  };
+  /// heightsFrom() for two runs that share the terrain candidates and the shore (two rows of a
+  /// tile's bin): runs of base::kLanes points get their terrain sums in one pass (more work in
+  /// flight per candidate); the same bits as one call per run.
+  void heightsFrom(const PointRun& first, const PointRun& second,
+                   std::span<const std::uint32_t> terrain, const Shore& shore) const noexcept;
+
   /// The fields of a terrain primitive the blend reads, packed (one cache line each).
   struct HotTerrain {
     geometry::Vec2 center;
@@ -139,13 +154,20 @@ public:
   static constexpr double kMaxRoughness = 0.95;
 
 private:
-  /// B(T…) at `lanes` points (xs, ys) into h, w: 1 (scalar code) or base::kLanes (vector
-  /// code), with the same bits either way.
-  void terrainLanes(std::size_t lanes, const double* xs, const double* ys, double spacing,
-                    std::span<const std::uint32_t> ids, double* h, double* w) const noexcept;
-  /// U(R…) at `lanes` points (xs, ys) into out[0 .. lanes): 1 or base::kLanes, as terrainLanes.
-  void riversLanes(std::size_t lanes, const double* xs, const double* ys,
+  /// B(T…) at `lanes` points into h, w: 1 (scalar code, at first[0]) or base::kLanes (vector
+  /// code) at `first` and, if not null, base::kLanes more at `second` (their results follow
+  /// the first's), samples spacing[0] and spacing[1] apart; the same bits either way.
+  void terrainLanes(std::size_t lanes, const geometry::Vec2* first, const geometry::Vec2* second,
+                    std::array<double, 2> spacing, std::span<const std::uint32_t> ids, double* h,
+                    double* w) const noexcept;
+  /// U(R…) at `lanes` points into out[0 .. lanes): 1 or base::kLanes, as terrainLanes.
+  void riversLanes(std::size_t lanes, const geometry::Vec2* points,
                    std::span<const RiverCandidate> rivers, Sample* out) const noexcept;
+  /// The rivers, the shore and the height at base::kLanes points `group` (heights.size() of
+  /// them are kept) from their terrain blend h, w.
+  void finishGroup(const geometry::Vec2* group, const double* h, const double* w,
+                   std::span<const RiverCandidate> rivers, const Shore& shore,
+                   std::span<double> heights) const noexcept;
   /// The height at a point `onLand` or not, `shore` metres from the boundary (capped at
   /// CoastShape::kBand on land and shelfReach() at sea), from its terrain and rivers.
   static double shapeCoast(const Sample& terrain, const Sample& rivers, bool onLand,
