@@ -108,6 +108,15 @@ void terrainPoint(const TerrainLaneArgs& args) noexcept {
   baseline::terrainKernel<baseline::Single>(args);
 }
 
+void coastLanes(const CoastLaneArgs& args) noexcept {
+  runBuild(baseline::coastLanes, avx2::coastLanes, avx512::coastLanes, args);
+}
+
+double coastPoint(Sample terrain, Sample rivers, bool onLand, double shore) noexcept {
+  return baseline::coastKernel<baseline::Single>(terrain.h, terrain.w, rivers.h, rivers.w, onLand,
+                                                 shore);
+}
+
 void nearestSegmentLanes(const SegmentLaneArgs& args) noexcept {
   runBuild(baseline::nearestSegmentsLanes, avx2::nearestSegmentsLanes, avx512::nearestSegmentsLanes,
            args);

@@ -80,6 +80,27 @@ unsigned closestOnCurveLanes(const CurveLaneArgs& args) noexcept;
 /// same bits as a lane of closestOnCurveLanes().
 unsigned closestOnCurvePoint(const CurveLaneArgs& args) noexcept;
 
+/// The coast shaping at base::kLanes points (World's CoastShape): from the terrain blend
+/// (h, w), the rivers' union (riverH, riverW), whether each point is on land (onLand: 1 or 0)
+/// and its squared distance to the shore (shore2, capped by the caller at the reach of its
+/// side or beyond), the final heights.
+struct CoastLaneArgs {
+  const double* h = nullptr;
+  const double* w = nullptr;
+  const double* riverH = nullptr;
+  const double* riverW = nullptr;
+  const double* onLand = nullptr;
+  const double* shore2 = nullptr;
+  double* heights = nullptr;
+};
+
+/// The coast shaping compiled for the instruction set in use (same bits on each).
+void coastLanes(const CoastLaneArgs& args) noexcept;
+/// The coast shaping of one point in scalar registers, `shore` metres from the boundary (at
+/// most CoastShape::kBand on land, World::shelfReach() at sea): the same bits as a lane of
+/// coastLanes() whose shore2 gives that distance.
+double coastPoint(Sample terrain, Sample rivers, bool onLand, double shore) noexcept;
+
 /// One nearest-segment search for base::kLanes points over the segments `ids` of
 /// `segments`: best2[l] becomes the least of itself and each segment's squared distance, as
 /// geometry::closestPointOnSegment and lengthSquared compute it.

@@ -18,12 +18,7 @@ using geometry::Vec2;
 
 constexpr double kGridCell = 500.0; // m
 constexpr std::uint64_t kNoiseStream = 0x746572726e6full;
-constexpr double kShelfReach = 4.0 * CoastShape::kShelfWidth;
-
-double smoothstep(double t) noexcept {
-  t = std::clamp(t, 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
+constexpr double kShelfReach = CoastShape::kShelfReach;
 
 geometry::Aabb worldBounds(const WorldData& data) {
   geometry::Aabb box = geometry::bounds(data.land);
@@ -201,24 +196,7 @@ double World::shapeCoast(Vec2 p, const Sample& terrain, const Sample& rivers,
 
 double World::shapeCoast(const Sample& terrain, const Sample& rivers, bool onLand,
                          double shore) noexcept {
-  // Rivers keep their own bed (monotone downstream); only the terrain gets the beach ramp.
-  // Both are capped by a surface that is 0 at the shore, so land and sea meet at 0 m,
-  // river mouths included.
-  if (onLand) {
-    const double d = shore;
-    if (d >= CoastShape::kBand)
-      return replace(terrain, rivers).h;
-    const double t = smoothstep(d / CoastShape::kBand);
-    const double ground = terrain.w > 0.0 ? terrain.h : rivers.h;
-    const Sample shaped{t * ground + (1.0 - t) * std::min(ground, CoastShape::kBeachSlope * d),
-                        terrain.w};
-    // A 45° cap near the shore that rises out of reach (×11) by the end of the band.
-    const double cap = d * (1.0 + 10.0 * t * t);
-    return replace(shaped, {std::min(rivers.h, cap), rivers.w}).h;
-  }
-  const double d = shore;
-  const double sea = -CoastShape::kShelfDepth * (1.0 - std::exp(-d / CoastShape::kShelfWidth));
-  return replace({sea, 1.0}, {std::min(rivers.h, sea), rivers.w}).h;
+  return detail::coastPoint(terrain, rivers, onLand, shore);
 }
 
 World::Evaluation World::evaluate(Vec2 p, double spacing) const noexcept {
@@ -305,22 +283,30 @@ void World::finishGroup(const Vec2* group, const double* h, const double* w,
   std::array<Sample, kLanes> river;
   riversLanes(kLanes, group, rivers, river.data());
   const std::size_t n = heights.size();
-  if (shore.coast != Coast::kUnknown || !shore.segments) {
+  if (shore.coast == Coast::kInland || (shore.coast == Coast::kUnknown && !shore.segments)) {
     for (std::size_t l = 0; l < n; ++l)
       heights[l] = shapeCoast(group[l], {h[l], w[l]}, river[l], shore.coast);
     return;
   }
-  // The squared distance to the nearest of the candidate segments, as the land index would
-  // find it (the same minimum of the same per-segment values), up to the shelf's reach.
-  std::array<double, kLanes> shore2;
-  shore2.fill(kShelfReach * kShelfReach);
-  detail::nearestSegmentLanes({land_.segments().data(), *shore.segments, group, shore2.data()});
-  for (std::size_t l = 0; l < n; ++l) {
-    const bool onLand = shore.onLand ? *shore.onLand : land_.contains(group[l]);
-    const double limit = onLand ? CoastShape::kBand : kShelfReach;
-    const double d = shore2[l] < limit * limit ? std::sqrt(shore2[l]) : limit;
-    heights[l] = shapeCoast({h[l], w[l]}, river[l], onLand, d);
+  std::array<double, kLanes> riverH, riverW, onLand, shore2, out;
+  for (std::size_t l = 0; l < kLanes; ++l) {
+    riverH[l] = river[l].h;
+    riverW[l] = river[l].w;
   }
+  if (shore.coast == Coast::kUnknown) {
+    // The squared distance to the nearest of the candidate segments, as the land index would
+    // find it (the same minimum of the same per-segment values), up to the shelf's reach.
+    shore2.fill(kShelfReach * kShelfReach);
+    detail::nearestSegmentLanes({land_.segments().data(), *shore.segments, group, shore2.data()});
+    for (std::size_t l = 0; l < kLanes; ++l)
+      onLand[l] = (shore.onLand ? *shore.onLand : land_.contains(group[l])) ? 1.0 : 0.0;
+  } else { // far at sea: every point beyond the shelf's reach
+    onLand.fill(0.0);
+    shore2.fill(kShelfReach * kShelfReach);
+  }
+  detail::coastLanes(
+      {h, w, riverH.data(), riverW.data(), onLand.data(), shore2.data(), out.data()});
+  std::copy_n(out.begin(), n, heights.begin());
 }
 
 } // namespace strahler::construction

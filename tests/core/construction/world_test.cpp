@@ -149,8 +149,9 @@ TEST(World, PairedRunsEqualSingleHeights) {
   for (int pair = 0; pair < 40; ++pair) {
     std::vector<Vec2> first, second;
     for (std::size_t l = 0; l < kRun; ++l) {
-      const Vec2 p = box.min + Vec2{box.size().x * (0.05 + pair / 45.0) + 37.0 * l,
-                                    box.size().y * (0.1 + pair / 50.0)};
+      const Vec2 p =
+          box.min + Vec2{box.size().x * (0.05 + pair / 45.0) + 37.0 * static_cast<double>(l),
+                         box.size().y * (0.1 + pair / 50.0)};
       first.push_back(p);
       second.push_back(p + Vec2{3.0, -41.0});
     }
@@ -200,6 +201,28 @@ TEST(World, CoastSitsAtSeaLevelAndTheSeaHasDepth) {
   EXPECT_EQ(sea.terrain.w, 0.0);
   EXPECT_EQ(sea.rivers.w, 0.0);
   EXPECT_LT(sea.height, -0.9 * CoastShape::kShelfDepth);
+}
+
+TEST(World, ShelfFollowsItsExponentialProfile) {
+  // The shelf's e^x is computed in plain arithmetic (the same bits on every instruction set);
+  // it must agree with the library's to far below a millimetre.
+  const World& world = defaultWorld();
+  const geometry::Aabb box = world.land().bounds();
+  base::Rng rng(5);
+  int checked = 0;
+  for (int i = 0; i < 2000 && checked < 300; ++i) {
+    const Vec2 p{rng.uniform(box.min.x - 15000.0, box.max.x + 15000.0),
+                 rng.uniform(box.min.y - 15000.0, box.max.y + 15000.0)};
+    const World::Evaluation e = world.evaluate(p, 10.0);
+    if (world.land().contains(p) || e.rivers.w > 0.0)
+      continue;
+    const double d = world.land().distanceToBoundary(p, World::shelfReach());
+    const double expected =
+        -CoastShape::kShelfDepth * (1.0 - std::exp(-d / CoastShape::kShelfWidth));
+    ASSERT_NEAR(e.height, expected, 1e-9) << "at " << p.x << ", " << p.y;
+    ++checked;
+  }
+  EXPECT_GT(checked, 100);
 }
 
 TEST(World, TerrainCoversTheLand) {

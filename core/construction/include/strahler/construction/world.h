@@ -19,6 +19,8 @@ struct CoastShape {
   static constexpr double kBeachSlope = 0.02;   ///< Slope of the beach ramp, m/m.
   static constexpr double kShelfDepth = 120.0;  ///< Depth the shelf tends to, m.
   static constexpr double kShelfWidth = 3000.0; ///< e-folding distance of the shelf, m.
+  /// Distance from the shore beyond which the sea floor is taken as flat, m.
+  static constexpr double kShelfReach = 4.0 * kShelfWidth;
 };
 
 /// The noise octaves every world shares: wavelength kLongest / 2^k for k < kOctaves.
