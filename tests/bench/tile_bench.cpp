@@ -93,6 +93,17 @@ void BM_TileAllPrimitives(benchmark::State& state) {
                                                    benchmark::Counter::kIsIterationInvariantRate);
 }
 
+/// A fixed number of tiles (range(1)) at zoom range(0) in one iteration, for counting with
+/// perf: scripts/bench/tile-counters.sh subtracts the run with 0 tiles (world generation and
+/// start-up), which Google Benchmark's own timing cannot do for a whole process.
+void BM_TileFixedCount(benchmark::State& state) {
+  const Fixture& f = fixture();
+  const tiling::SampleGrid grid = f.web.rasterGrid(tileAt(static_cast<int>(state.range(0))), 256);
+  for (auto _ : state)
+    for (std::int64_t i = 0; i < state.range(1); ++i)
+      benchmark::DoNotOptimize(f.evaluator.evaluate(grid));
+}
+
 // Zoom 0 is the whole Earth (Mallorca a few pixels), 9 holds all of Mallorca, 13 is a
 // middle zoom, 18 the finest; restricted evaluation also at every zoom from 8 to 13, where the
 // cost peaks.
@@ -109,6 +120,11 @@ BENCHMARK(BM_TileRestrictedOn)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TileWholeWorld)->Arg(0)->Arg(9)->Arg(13)->Arg(18)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TileAllPrimitives)->Arg(13)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TileFixedCount)
+    ->ArgsProduct({{0, 5, 8, 9, 10, 11, 13, 18}, {0, 300}})
+    ->ArgNames({"zoom", "tiles"})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 } // namespace
 } // namespace strahler
