@@ -1,6 +1,6 @@
 // The tile server's endpoints over real sockets on 127.0.0.1 (ephemeral port).
-#include "http_client.h"
 #include "http_server.h"
+#include "test_client.h"
 #include "test_worlds.h"
 #include "tile_server.h"
 
@@ -11,13 +11,36 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <map>
 #include <thread>
 
 namespace strahler::app {
 namespace {
 
-using strahler::testing::request;
-using strahler::testing::sendRaw;
+/// A response with its headers by lower-case name, as these tests read them.
+struct HttpResponse {
+  int status = 0; ///< 0 when no response came.
+  std::map<std::string, std::string> headers;
+  std::string body;
+};
+
+/// `method` of `target` with Connection: close on a fresh connection (each step bounded by
+/// 20 s).
+HttpResponse request(std::uint16_t port, const std::string& target,
+                     const std::string& method = "GET", const std::string& extraHeaders = "") {
+  const std::string bytes = method + " " + target +
+                            " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) +
+                            "\r\nConnection: close\r\n" + extraHeaders + "\r\n";
+  HttpResponse out;
+  if (const auto r = http::test::fetch(port, bytes, std::chrono::seconds(20))) {
+    out.status = r->status;
+    for (const auto& [name, value] : r->headers)
+      out.headers[name] = value;
+    out.body = r->body;
+  }
+  return out;
+}
 
 /// A running server over the default island.
 struct Running {

@@ -212,8 +212,9 @@ std::string getRequest(std::string_view target, std::string_view extraHeaders) {
   return request;
 }
 
-std::optional<RawResponse> fetch(std::uint16_t port, std::string_view request) {
-  Connection connection(port);
+std::optional<RawResponse> fetch(std::uint16_t port, std::string_view request,
+                                 std::chrono::milliseconds timeout) {
+  Connection connection(port, timeout);
   if (!connection.send(request))
     return std::nullopt;
   return connection.read(request.substr(0, 5) == "HEAD ");

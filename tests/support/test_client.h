@@ -62,7 +62,10 @@ private:
 
 /// "GET `target` HTTP/1.1" with a Host header and `extraHeaders` (each ending in CRLF).
 std::string getRequest(std::string_view target, std::string_view extraHeaders = {});
-/// Sends `request` on a fresh connection and reads one response.
-std::optional<RawResponse> fetch(std::uint16_t port, std::string_view request);
+/// Sends `request` on a fresh connection and reads one response, each step bounded by
+/// `timeout`.
+std::optional<RawResponse>
+fetch(std::uint16_t port, std::string_view request,
+      std::chrono::milliseconds timeout = std::chrono::milliseconds(5000));
 
 } // namespace strahler::http::test
