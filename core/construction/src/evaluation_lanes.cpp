@@ -42,7 +42,9 @@ namespace avx2 { // four doubles per register
 #pragma GCC target("avx512f,avx512dq")
 namespace avx512 { // eight doubles per register
 #define STRAHLER_KERNEL_WIDTH 8
+#define STRAHLER_KERNEL_WIDE_HASH
 #include "evaluation_kernels.inc"
+#undef STRAHLER_KERNEL_WIDE_HASH
 #undef STRAHLER_KERNEL_WIDTH
 } // namespace avx512
 #pragma GCC pop_options

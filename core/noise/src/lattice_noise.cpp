@@ -25,10 +25,14 @@ double LatticeNoise::at(geometry::Vec2 p) const noexcept {
   const double fx = std::floor(p.x), fy = std::floor(p.y);
   const auto cx = static_cast<std::uint32_t>(static_cast<std::int32_t>(fx));
   const auto cy = static_cast<std::uint32_t>(static_cast<std::int32_t>(fy));
-  return cellNoise(cx, cy, p.x - fx, p.y - fy, [](std::uint32_t h, double dx, double dy) {
-    const double* g = detail::kGradients[mix(h)];
-    return g[0] * dx + g[1] * dy;
-  });
+  const auto word = [](std::uint32_t h) { return h; };
+  return cellNoise(
+      cx, cy, p.x - fx, p.y - fy,
+      [&](std::uint32_t h, double dx, double dy) {
+        const double* g = detail::kGradients[h];
+        return g[0] * dx + g[1] * dy;
+      },
+      word);
 }
 
 } // namespace strahler::noise

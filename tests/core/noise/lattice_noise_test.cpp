@@ -14,8 +14,8 @@ namespace {
 
 using base::kLanes;
 
-/// atLanes() at (xs, ys), W lanes at a time.
-template <int W>
+/// atLanes() at (xs, ys), W lanes at a time (kWideHash: the lattice hash in 64-bit lanes).
+template <int W, bool kWideHash = false>
 std::array<double, kLanes> lanes(const LatticeNoise& n, const double* xs, const double* ys) {
   using D = typename base::Vectors<W>::Doubles;
   std::array<double, kLanes> out;
@@ -23,14 +23,14 @@ std::array<double, kLanes> lanes(const LatticeNoise& n, const double* xs, const 
     D x, y;
     std::memcpy(&x, xs + first, sizeof x);
     std::memcpy(&y, ys + first, sizeof y);
-    const D v = n.atLanes<W>(x, y);
+    const D v = n.atLanes<W, kWideHash>(x, y);
     std::memcpy(out.data() + first, &v, sizeof v);
   }
   return out;
 }
 
 /// Every lane of atLanes<W>() equals at() bit for bit, on random points at many scales.
-template <int W> void expectLanesEqualSinglePoints() {
+template <int W, bool kWideHash = false> void expectLanesEqualSinglePoints() {
   const LatticeNoise n(42);
   base::Rng rng(3);
   for (int trial = 0; trial < 2000; ++trial) {
@@ -42,7 +42,7 @@ template <int W> void expectLanesEqualSinglePoints() {
     }
     if (trial % 7 == 0)
       xs[trial % kLanes] = std::floor(xs[trial % kLanes]); // on a lattice line
-    const std::array<double, kLanes> got = lanes<W>(n, xs, ys);
+    const std::array<double, kLanes> got = lanes<W, kWideHash>(n, xs, ys);
     for (int l = 0; l < kLanes; ++l) {
       const double expected = n.at({xs[l], ys[l]});
       ASSERT_EQ(got[static_cast<std::size_t>(l)], expected)
@@ -53,8 +53,9 @@ template <int W> void expectLanesEqualSinglePoints() {
 
 TEST(LatticeNoise, LanesEqualSinglePointsBitForBit) {
   expectLanesEqualSinglePoints<8>();
-  expectLanesEqualSinglePoints<4>(); // the AVX2 kernels' width
-  expectLanesEqualSinglePoints<2>(); // the SSE2 kernels' width
+  expectLanesEqualSinglePoints<8, true>(); // the AVX-512 kernels' hash in 64-bit lanes
+  expectLanesEqualSinglePoints<4>();       // the AVX2 kernels' width
+  expectLanesEqualSinglePoints<2>();       // the SSE2 kernels' width
 }
 
 TEST(LatticeNoise, ZeroOnTheLatticeAndBoundedBetween) {

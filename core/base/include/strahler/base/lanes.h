@@ -21,18 +21,21 @@ template <int W> struct Vectors;
 template <> struct Vectors<2> {
   using Doubles = double __attribute__((vector_size(16)));
   using Int64s = std::int64_t __attribute__((vector_size(16)));
+  using UInt64s = std::uint64_t __attribute__((vector_size(16)));
   using Int32s = std::int32_t __attribute__((vector_size(8)));
   using Words = std::uint32_t __attribute__((vector_size(8)));
 };
 template <> struct Vectors<4> {
   using Doubles = double __attribute__((vector_size(32)));
   using Int64s = std::int64_t __attribute__((vector_size(32)));
+  using UInt64s = std::uint64_t __attribute__((vector_size(32)));
   using Int32s = std::int32_t __attribute__((vector_size(16)));
   using Words = std::uint32_t __attribute__((vector_size(16)));
 };
 template <> struct Vectors<8> {
   using Doubles = double __attribute__((vector_size(64)));
   using Int64s = std::int64_t __attribute__((vector_size(64)));
+  using UInt64s = std::uint64_t __attribute__((vector_size(64)));
   using Int32s = std::int32_t __attribute__((vector_size(32)));
   using Words = std::uint32_t __attribute__((vector_size(32)));
 };

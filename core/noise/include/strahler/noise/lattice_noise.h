@@ -33,25 +33,39 @@ public:
   }
 
   /// The same at W points held in vectors of W lanes (W = 2, 4, 8: see base::Vectors).
-  template <int W>
+  /// kWideHash: the lattice hash in 64-bit lanes, each holding its 32-bit value (the same
+  /// bits), for AVX-512 builds: GCC 12 widens eight 32-bit hashes to 64-bit gradient indices
+  /// in two halves (four instructions per corner), and 64-bit lanes need no widening.
+  template <int W, bool kWideHash = false>
   [[gnu::always_inline]] typename base::Vectors<W>::Doubles
   atLanes(typename base::Vectors<W>::Doubles px,
           typename base::Vectors<W>::Doubles py) const noexcept {
     using Doubles = typename base::Vectors<W>::Doubles;
     using Int32s = typename base::Vectors<W>::Int32s;
     using Words = typename base::Vectors<W>::Words;
+    using UInt64s = typename base::Vectors<W>::UInt64s;
     // floor by truncation then correction (exact below kLaneLimit).
     const Doubles tx = __builtin_convertvector(__builtin_convertvector(px, Int32s), Doubles);
     const Doubles ty = __builtin_convertvector(__builtin_convertvector(py, Int32s), Doubles);
     const Doubles fx = tx > px ? tx - 1.0 : tx;
     const Doubles fy = ty > py ? ty - 1.0 : ty;
-    const Words cx = __builtin_convertvector(__builtin_convertvector(fx, Int32s), Words);
-    const Words cy = __builtin_convertvector(__builtin_convertvector(fy, Int32s), Words);
-    return cellNoise(
-        cx, cy, px - fx,
-        py - fy, [this](Words h, Doubles dx, Doubles dy) __attribute__((always_inline)) {
-          return dotGradient<W>(h, dx, dy);
-        });
+    const auto dot = [this](auto h, Doubles dx, Doubles dy) __attribute__((always_inline)) {
+      return dotGradient<W>(h, dx, dy);
+    };
+    if constexpr (kWideHash) {
+      const UInt64s low = UInt64s{} + 0xffffffffu;
+      const auto wrap = [low](UInt64s h) __attribute__((always_inline)) {
+        return h & low;
+      };
+      using Int64s = typename base::Vectors<W>::Int64s;
+      const UInt64s cx = wrap(reinterpret_cast<UInt64s>(__builtin_convertvector(fx, Int64s)));
+      const UInt64s cy = wrap(reinterpret_cast<UInt64s>(__builtin_convertvector(fy, Int64s)));
+      return cellNoise(cx, cy, px - fx, py - fy, dot, wrap);
+    } else {
+      const Words cx = __builtin_convertvector(__builtin_convertvector(fx, Int32s), Words);
+      const Words cy = __builtin_convertvector(__builtin_convertvector(fy, Int32s), Words);
+      return cellNoise(cx, cy, px - fx, py - fy, dot, [](Words h) { return h; });
+    }
   }
 
 private:
@@ -64,24 +78,26 @@ private:
   static constexpr std::uint32_t kPrimeY = 0xd8163841u;
 
   /// Final mix of a cell's hash (one xor-shift-multiply round); its top 4 bits pick the
-  /// gradient.
-  template <class W> static W mix(W h) noexcept {
+  /// gradient. `wrap` keeps 32 bits (the identity on 32-bit words).
+  template <class W, class Wrap> static W mix(W h, Wrap&& wrap) noexcept {
     h ^= h >> 15;
-    h *= 0x2c1b3c6du;
+    h = wrap(wrap(h) * 0x2c1b3c6du); // operands of 32 bits: one 32×32→64-bit multiply a lane
     return h >> 28;
   }
   /// Perlin's blend of the gradients of the four corners of lattice cell (cx, cy) at offset
-  /// (x, y) inside it; dot(h, dx, dy) is the gradient picked by hash h dotted with (dx, dy).
+  /// (x, y) inside it; dot(k, dx, dy) is gradient k (of 16, from each corner's mixed hash)
+  /// dotted with (dx, dy);
+  /// `wrap` keeps 32 bits of a word (the identity on 32-bit words, a mask on 64-bit lanes).
   /// at() and atLanes() share it, so both perform the same operations.
-  template <class D, class W, class Dot>
-  [[gnu::always_inline]] D cellNoise(W cx, W cy, D x, D y, Dot&& dot) const noexcept {
-    const W hx0 = cx * kPrimeX, hx1 = (cx + 1u) * kPrimeX;
-    const W hy0 = (cy * kPrimeY) ^ seed_, hy1 = ((cy + 1u) * kPrimeY) ^ seed_;
+  template <class D, class W, class Dot, class Wrap>
+  [[gnu::always_inline]] D cellNoise(W cx, W cy, D x, D y, Dot&& dot, Wrap&& wrap) const noexcept {
+    const W hx0 = wrap(wrap(cx) * kPrimeX), hx1 = wrap(wrap(cx + 1u) * kPrimeX);
+    const W hy0 = wrap(wrap(cy) * kPrimeY) ^ seed_, hy1 = wrap(wrap(cy + 1u) * kPrimeY) ^ seed_;
     const D x1 = x - 1.0, y1 = y - 1.0;
-    const D n00 = dot(hx0 ^ hy0, x, y);
-    const D n10 = dot(hx1 ^ hy0, x1, y);
-    const D n01 = dot(hx0 ^ hy1, x, y1);
-    const D n11 = dot(hx1 ^ hy1, x1, y1);
+    const D n00 = dot(mix(hx0 ^ hy0, wrap), x, y);
+    const D n10 = dot(mix(hx1 ^ hy0, wrap), x1, y);
+    const D n01 = dot(mix(hx0 ^ hy1, wrap), x, y1);
+    const D n11 = dot(mix(hx1 ^ hy1, wrap), x1, y1);
     const D u = fade(x), v = fade(y);
     const D a = n00 + u * (n10 - n00);
     const D b = n01 + u * (n11 - n01);
@@ -90,15 +106,15 @@ private:
   template <class T> static T fade(T t) noexcept {
     return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
   }
-  /// The gradient picked by hash h (of W lanes) dotted with (x, y): a lookup in the table of
-  /// 16 gradients held as vectors of W lanes, 2W entries per two-vector shuffle.
-  template <int W>
+  /// Gradient h (0 to 15, in W lanes of 32 or 64 bits) dotted with (x, y): a lookup in the
+  /// table of 16 gradients held as vectors of W lanes, 2W entries per two-vector shuffle.
+  template <int W, class H>
   [[gnu::always_inline]] typename base::Vectors<W>::Doubles
-  dotGradient(typename base::Vectors<W>::Words h, typename base::Vectors<W>::Doubles x,
+  dotGradient(H h, typename base::Vectors<W>::Doubles x,
               typename base::Vectors<W>::Doubles y) const noexcept {
     using Doubles = typename base::Vectors<W>::Doubles;
     using Int64s = typename base::Vectors<W>::Int64s;
-    const Int64s index = __builtin_convertvector(mix(h), Int64s);
+    const Int64s index = __builtin_convertvector(h, Int64s);
     if constexpr (W == 4) {
       // Gradient k is gradient k & 3 of the first quadrant, (p, s), turned by k >> 2 quarter
       // turns: the dot product is p·u + s·v with (u, v) = (x, y) turned back, and equals
