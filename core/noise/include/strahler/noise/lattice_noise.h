@@ -91,8 +91,10 @@ private:
   /// at() and atLanes() share it, so both perform the same operations.
   template <class D, class W, class Dot, class Wrap>
   [[gnu::always_inline]] D cellNoise(W cx, W cy, D x, D y, Dot&& dot, Wrap&& wrap) const noexcept {
-    const W hx0 = wrap(wrap(cx) * kPrimeX), hx1 = wrap(wrap(cx + 1u) * kPrimeX);
-    const W hy0 = wrap(wrap(cy) * kPrimeY) ^ seed_, hy1 = wrap(wrap(cy + 1u) * kPrimeY) ^ seed_;
+    // (c + 1)·P = c·P + P modulo 2^32: one multiplication per axis.
+    const W hx0 = wrap(wrap(cx) * kPrimeX), hx1 = wrap(hx0 + kPrimeX);
+    const W rowHash = wrap(wrap(cy) * kPrimeY);
+    const W hy0 = rowHash ^ seed_, hy1 = wrap(rowHash + kPrimeY) ^ seed_;
     const D x1 = x - 1.0, y1 = y - 1.0;
     const D n00 = dot(mix(hx0 ^ hy0, wrap), x, y);
     const D n10 = dot(mix(hx1 ^ hy0, wrap), x1, y);
