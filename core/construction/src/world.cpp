@@ -288,22 +288,28 @@ void World::finishGroup(const Vec2* group, const double* h, const double* w,
       heights[l] = shapeCoast(group[l], {h[l], w[l]}, river[l], shore.coast);
     return;
   }
+  if (shore.coast == Coast::kFarSea) {
+    // The shelf's floor beyond its reach, once (the coast kernel's value there: with no
+    // river it is the floor itself), then the kernel's union with the rivers per point.
+    static const double shelfFloor = detail::coastPoint({}, {}, false, kShelfReach);
+    for (std::size_t l = 0; l < n; ++l) {
+      const double riverW = river[l].w, riverH = river[l].h;
+      heights[l] =
+          (1.0 - riverW) * shelfFloor + riverW * (shelfFloor < riverH ? shelfFloor : riverH);
+    }
+    return;
+  }
   std::array<double, kLanes> riverH, riverW, onLand, shore2, out;
   for (std::size_t l = 0; l < kLanes; ++l) {
     riverH[l] = river[l].h;
     riverW[l] = river[l].w;
   }
-  if (shore.coast == Coast::kUnknown) {
-    // The squared distance to the nearest of the candidate segments, as the land index would
-    // find it (the same minimum of the same per-segment values), up to the shelf's reach.
-    shore2.fill(kShelfReach * kShelfReach);
-    detail::nearestSegmentLanes({land_.segments().data(), *shore.segments, group, shore2.data()});
-    for (std::size_t l = 0; l < kLanes; ++l)
-      onLand[l] = (shore.onLand ? *shore.onLand : land_.contains(group[l])) ? 1.0 : 0.0;
-  } else { // far at sea: every point beyond the shelf's reach
-    onLand.fill(0.0);
-    shore2.fill(kShelfReach * kShelfReach);
-  }
+  // The squared distance to the nearest of the candidate segments, as the land index would
+  // find it (the same minimum of the same per-segment values), up to the shelf's reach.
+  shore2.fill(kShelfReach * kShelfReach);
+  detail::nearestSegmentLanes({land_.segments().data(), *shore.segments, group, shore2.data()});
+  for (std::size_t l = 0; l < kLanes; ++l)
+    onLand[l] = (shore.onLand ? *shore.onLand : land_.contains(group[l])) ? 1.0 : 0.0;
   detail::coastLanes(
       {h, w, riverH.data(), riverW.data(), onLand.data(), shore2.data(), out.data()});
   std::copy_n(out.begin(), n, heights.begin());
