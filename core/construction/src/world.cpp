@@ -49,6 +49,9 @@ World::World(WorldData data)
     hot_.push_back({t.center, radius2, radius2 > 0.0 ? 1.0 / radius2 : 0.0, t.elevation,
                     std::max(t.amplitude, 0.0), std::clamp(t.roughness, 0.0, kMaxRoughness)});
     terrainGrid_.insert(geometry::Aabb{t.center, t.center}.expanded(t.radius), i);
+    // Beyond this in y the squared distance computed is at least r² (rounding is monotone and
+    // the margin is far above the rounding of a difference of coordinates).
+    terrainReach_ = std::max(terrainReach_, t.radius * (1.0 + 1e-9) + 1e-6);
   }
   for (std::uint32_t i = 0; i < data_.rivers.size(); ++i) {
     riverSupport_.push_back(primitives::supportBox(data_.rivers[i]));

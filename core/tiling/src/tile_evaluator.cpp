@@ -422,13 +422,36 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
                                          riverBins.rivers(riverBins.binOf(row, col)),
                                          {heights.data() + k, n}};
   };
+  // Where a bin is much taller than a terrain primitive reaches (samples hundreds of metres
+  // apart), each run or pair of rows takes only the bin's candidates whose centres lie within
+  // World::terrainReach() of its samples in y: the others add exactly nothing, and the list
+  // keeps its order, so the sums keep their bits.
+  const double terrainReach = world_.terrainReach();
+  const bool byRow = rows >= 4 && grid.bounds.size().y / grid.height * rows > 2.0 * terrainReach;
+  const std::size_t runsPerRow = (width + base::kLanes - 1) / base::kLanes;
+  std::vector<std::uint32_t> near(byRow ? kDenseBin : 0);
   for (int row = 0; row < grid.height;) {
     // Two rows of one bin share their terrain candidates: their runs are evaluated in pairs.
     const bool paired = row + 1 < grid.height && bins.binOf(row + 1, 0) == bins.binOf(row, 0);
     for (int col = 0; col < grid.width; col += base::kLanes) {
       const std::size_t bin = bins.binOf(row, col);
       const construction::World::PointRun first = runAt(row, col);
-      if (bins.terrain(bin).size() > kDenseBin) {
+      std::span<const std::uint32_t> terrain = bins.terrain(bin);
+      if (byRow && terrain.size() <= kDenseBin) {
+        const std::size_t q = static_cast<std::size_t>(col) / base::kLanes;
+        Aabb samples = runBoxes[static_cast<std::size_t>(row) * runsPerRow + q];
+        if (paired)
+          samples.add(runBoxes[static_cast<std::size_t>(row + 1) * runsPerRow + q]);
+        const double low = samples.min.y - terrainReach, high = samples.max.y + terrainReach;
+        std::size_t n = 0;
+        for (const std::uint32_t i : terrain) { // without a branch per candidate
+          const double y = world_.terrainCenterY(i);
+          near[n] = i;
+          n += static_cast<std::size_t>((y >= low) & (y <= high));
+        }
+        terrain = std::span<const std::uint32_t>(near).first(n);
+      }
+      if (terrain.size() > kDenseBin) {
         // Samples kilometres apart (low zooms): each point's own cell of the world's index
         // holds far fewer candidates than the bin.
         for (int r = row; r < row + (paired ? 2 : 1); ++r) {
@@ -443,9 +466,9 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
           s.coast, s.onLand,
           std::span<const std::uint32_t>(shoreSegments).subspan(s.begin, s.count)};
       if (paired)
-        world_.heightsFrom(first, runAt(row + 1, col), bins.terrain(bin), shore);
+        world_.heightsFrom(first, runAt(row + 1, col), terrain, shore);
       else
-        world_.heightsFrom(first.points, first.spacing, bins.terrain(bin), first.rivers, shore,
+        world_.heightsFrom(first.points, first.spacing, terrain, first.rivers, shore,
                            first.heights);
     }
     row += paired ? 2 : 1;

@@ -51,6 +51,11 @@ public:
   /// How near (m) a run of river primitive i's curve must come to a point to shape it: the
   /// river's radius with a margin for rounding (extra runs are harmless, missing ones not).
   double riverReach(std::uint32_t i) const noexcept;
+  /// How far (m) in y a terrain primitive's centre may lie from a point it shapes: the
+  /// largest radius with a margin above rounding (a primitive farther adds exactly nothing).
+  double terrainReach() const noexcept { return terrainReach_; }
+  /// The y of terrain primitive i's centre (read where the blend reads it).
+  double terrainCenterY(std::uint32_t i) const noexcept { return hot_[i].center.y; }
   /// A river primitive among the candidates of some points, with the runs of its curve
   /// (riverChunks()) to search: [firstChunk, endChunk) must hold every run that comes within
   /// riverReach() of any of the points.
@@ -192,6 +197,7 @@ private:
   std::vector<HotSegment> hotSegments_;
   std::vector<std::size_t> segmentBegin_;
   std::vector<HotTerrain> hot_; // per terrain primitive
+  double terrainReach_ = 0.0;
   noise::LatticeNoise noise_;
 };
 
