@@ -155,35 +155,8 @@ void Connection::setReceiveTimeout(std::chrono::milliseconds timeout) {
   ::setsockopt(fd_, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
 }
 
-bool Connection::closedWithin(std::chrono::milliseconds timeout) {
-  if (fd_ < 0)
-    return false;
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  char chunk[16384];
-  for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-        deadline - std::chrono::steady_clock::now());
-    if (left.count() <= 0)
-      break;
-    setReceiveTimeout(left);
-    const ssize_t n = ::recv(fd_, chunk, sizeof chunk, 0);
-    if (n > 0)
-      continue;
-    if (n == 0 || errno == ECONNRESET) {
-      setReceiveTimeout(timeout_);
-      return true;
-    }
-    if (errno != EINTR)
-      break;
-  }
-  setReceiveTimeout(timeout_);
-  return false;
-}
-
-std::string Connection::readUntilClose(std::chrono::milliseconds timeout) {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  std::string received = std::move(buffer_);
-  buffer_.clear();
+bool Connection::receiveUntil(std::chrono::steady_clock::time_point deadline, std::string* keep) {
+  bool closed = false;
   char chunk[16384];
   while (fd_ >= 0) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
@@ -192,14 +165,29 @@ std::string Connection::readUntilClose(std::chrono::milliseconds timeout) {
       break;
     setReceiveTimeout(left);
     const ssize_t n = ::recv(fd_, chunk, sizeof chunk, 0);
+    if (n > 0) {
+      if (keep)
+        keep->append(chunk, static_cast<std::size_t>(n));
+      continue;
+    }
     if (n < 0 && errno == EINTR)
       continue;
-    if (n <= 0)
-      break;
-    received.append(chunk, static_cast<std::size_t>(n));
+    closed = n == 0 || errno == ECONNRESET;
+    break;
   }
   if (fd_ >= 0)
     setReceiveTimeout(timeout_);
+  return closed;
+}
+
+bool Connection::closedWithin(std::chrono::milliseconds timeout) {
+  return receiveUntil(std::chrono::steady_clock::now() + timeout, nullptr);
+}
+
+std::string Connection::readUntilClose(std::chrono::milliseconds timeout) {
+  std::string received = std::move(buffer_);
+  buffer_.clear();
+  receiveUntil(std::chrono::steady_clock::now() + timeout, &received);
   return received;
 }
 

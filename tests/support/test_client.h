@@ -52,6 +52,9 @@ public:
 private:
   /// Receives more bytes into buffer_; false on EOF, error or timeout.
   bool fill();
+  /// Receives until the server closes, an error or `deadline`, appending the bytes to `keep`
+  /// (discarded when null); true when the server closed (EOF or reset).
+  bool receiveUntil(std::chrono::steady_clock::time_point deadline, std::string* keep);
   bool readHead(RawResponse& response);
   void setReceiveTimeout(std::chrono::milliseconds timeout);
 
