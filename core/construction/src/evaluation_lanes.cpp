@@ -119,6 +119,11 @@ double coastPoint(Sample terrain, Sample rivers, bool onLand, double shore) noex
                                                  shore);
 }
 
+double farSeaPoint(Sample rivers) noexcept {
+  static const double floor = baseline::shelfDepth<baseline::Single>(CoastShape::kShelfReach);
+  return baseline::seaBed<baseline::Single>(floor, rivers.h, rivers.w);
+}
+
 void nearestSegmentLanes(const SegmentLaneArgs& args) noexcept {
   runBuild(baseline::nearestSegmentsLanes, avx2::nearestSegmentsLanes, avx512::nearestSegmentsLanes,
            args);

@@ -100,6 +100,8 @@ void coastLanes(const CoastLaneArgs& args) noexcept;
 /// most CoastShape::kBand on land, World::shelfReach() at sea): the same bits as a lane of
 /// coastLanes() whose shore2 gives that distance.
 double coastPoint(Sample terrain, Sample rivers, bool onLand, double shore) noexcept;
+/// coastPoint() at sea beyond the shelf's reach, its depth computed once: the same bits.
+double farSeaPoint(Sample rivers) noexcept;
 
 /// One nearest-segment search for base::kLanes points over the segments `ids` of
 /// `segments`: best2[l] becomes the least of itself and each segment's squared distance, as

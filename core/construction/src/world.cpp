@@ -20,6 +20,12 @@ constexpr double kGridCell = 500.0; // m
 constexpr std::uint64_t kNoiseStream = 0x746572726e6full;
 constexpr double kShelfReach = CoastShape::kShelfReach;
 
+/// A radius with a margin far above the rounding of distances between coordinates: points
+/// farther than it are beyond the radius in computed distances too.
+double withRoundingMargin(double radius) noexcept {
+  return radius * (1.0 + 1e-9) + 1e-6;
+}
+
 geometry::Aabb worldBounds(const WorldData& data) {
   geometry::Aabb box = geometry::bounds(data.land);
   for (const primitives::TerrainPrimitive& t : data.terrain)
@@ -29,6 +35,31 @@ geometry::Aabb worldBounds(const WorldData& data) {
   if (box.empty())
     box.add(Vec2{0, 0});
   return box;
+}
+
+/// The octaves that survive the LOD fade at `spacing` (they get shorter, so a prefix) and
+/// their fades. Each costs a division, and callers sweep rows of equal spacing (or pairs of
+/// rows), so the last two are kept per thread (a pure function of the spacing: same values).
+const detail::OctaveFades& fadesAt(double spacing) noexcept {
+  thread_local std::array<detail::OctaveFades, 2> kept{
+      {{std::numeric_limits<double>::quiet_NaN(), 0, {}},
+       {std::numeric_limits<double>::quiet_NaN(), 0, {}}}};
+  thread_local std::size_t older = 0;
+  for (const detail::OctaveFades& f : kept)
+    if (f.spacing == spacing)
+      return f;
+  detail::OctaveFades& fades = kept[older];
+  older ^= 1;
+  int active = 0;
+  for (double wavelength = NoiseOctaves::kLongest;
+       active < NoiseOctaves::kOctaves && octaveFade(wavelength, spacing) > 0.0;
+       wavelength *= 0.5) {
+    fades.fade[static_cast<std::size_t>(active)] = octaveFade(wavelength, spacing);
+    ++active;
+  }
+  fades.active = active;
+  fades.spacing = spacing;
+  return fades;
 }
 
 } // namespace
@@ -49,9 +80,7 @@ World::World(WorldData data)
     hot_.push_back({t.center, radius2, radius2 > 0.0 ? 1.0 / radius2 : 0.0, t.elevation,
                     std::max(t.amplitude, 0.0), std::clamp(t.roughness, 0.0, kMaxRoughness)});
     terrainGrid_.insert(geometry::Aabb{t.center, t.center}.expanded(t.radius), i);
-    // Beyond this in y the squared distance computed is at least r² (rounding is monotone and
-    // the margin is far above the rounding of a difference of coordinates).
-    terrainReach_ = std::max(terrainReach_, t.radius * (1.0 + 1e-9) + 1e-6);
+    terrainReach_ = std::max(terrainReach_, withRoundingMargin(t.radius));
   }
   for (std::uint32_t i = 0; i < data_.rivers.size(); ++i) {
     riverSupport_.push_back(primitives::supportBox(data_.rivers[i]));
@@ -94,37 +123,8 @@ World::World(WorldData data)
 }
 
 double World::riverReach(std::uint32_t i) const noexcept {
-  return data_.rivers[i].radius * (1.0 + 1e-9) + 1e-6;
+  return withRoundingMargin(data_.rivers[i].radius);
 }
-
-namespace {
-
-/// The octaves that survive the LOD fade at `spacing` (they get shorter, so a prefix) and
-/// their fades. Each costs a division, and callers sweep rows of equal spacing (or pairs of
-/// rows), so the last two are kept per thread (a pure function of the spacing: same values).
-const detail::OctaveFades& fadesAt(double spacing) noexcept {
-  thread_local std::array<detail::OctaveFades, 2> kept{
-      {{std::numeric_limits<double>::quiet_NaN(), 0, {}},
-       {std::numeric_limits<double>::quiet_NaN(), 0, {}}}};
-  thread_local std::size_t older = 0;
-  for (const detail::OctaveFades& f : kept)
-    if (f.spacing == spacing)
-      return f;
-  detail::OctaveFades& fades = kept[older];
-  older ^= 1;
-  int active = 0;
-  for (double wavelength = NoiseOctaves::kLongest;
-       active < NoiseOctaves::kOctaves && octaveFade(wavelength, spacing) > 0.0;
-       wavelength *= 0.5) {
-    fades.fade[static_cast<std::size_t>(active)] = octaveFade(wavelength, spacing);
-    ++active;
-  }
-  fades.active = active;
-  fades.spacing = spacing;
-  return fades;
-}
-
-} // namespace
 
 void World::terrainLanes(std::size_t lanes, const Vec2* first, const Vec2* second,
                          std::array<double, 2> spacing, std::span<const std::uint32_t> ids,
@@ -191,7 +191,7 @@ double World::shapeCoast(Vec2 p, const Sample& terrain, const Sample& rivers,
   if (coast == Coast::kInland)
     return replace(terrain, rivers).h;
   if (coast == Coast::kFarSea)
-    return shapeCoast(terrain, rivers, false, kShelfReach);
+    return detail::farSeaPoint(rivers);
   const bool onLand = land_.contains(p);
   return shapeCoast(terrain, rivers, onLand,
                     land_.distanceToBoundary(p, onLand ? CoastShape::kBand : kShelfReach));
@@ -286,20 +286,9 @@ void World::finishGroup(const Vec2* group, const double* h, const double* w,
   std::array<Sample, kLanes> river;
   riversLanes(kLanes, group, rivers, river.data());
   const std::size_t n = heights.size();
-  if (shore.coast == Coast::kInland || (shore.coast == Coast::kUnknown && !shore.segments)) {
+  if (shore.coast != Coast::kUnknown || !shore.segments) { // inland, far at sea, or unknown
     for (std::size_t l = 0; l < n; ++l)
       heights[l] = shapeCoast(group[l], {h[l], w[l]}, river[l], shore.coast);
-    return;
-  }
-  if (shore.coast == Coast::kFarSea) {
-    // The shelf's floor beyond its reach, once (the coast kernel's value there: with no
-    // river it is the floor itself), then the kernel's union with the rivers per point.
-    static const double shelfFloor = detail::coastPoint({}, {}, false, kShelfReach);
-    for (std::size_t l = 0; l < n; ++l) {
-      const double riverW = river[l].w, riverH = river[l].h;
-      heights[l] =
-          (1.0 - riverW) * shelfFloor + riverW * (shelfFloor < riverH ? shelfFloor : riverH);
-    }
     return;
   }
   std::array<double, kLanes> riverH, riverW, onLand, shore2, out;

@@ -266,17 +266,20 @@ private:
   std::vector<construction::World::RiverCandidate> rivers_;
 };
 
+/// How far p lies outside box b along x and along y (0 inside).
+Vec2 gapsToBox(Vec2 p, const Aabb& b) {
+  return {std::max(std::max(b.min.x - p.x, 0.0), p.x - b.max.x),
+          std::max(std::max(b.min.y - p.y, 0.0), p.y - b.max.y)};
+}
+
 /// Squared distance from p to box b (0 inside).
 double distanceToBox2(Vec2 p, const Aabb& b) {
-  const double dx = std::max(std::max(b.min.x - p.x, 0.0), p.x - b.max.x);
-  const double dy = std::max(std::max(b.min.y - p.y, 0.0), p.y - b.max.y);
-  return dx * dx + dy * dy;
+  return lengthSquared(gapsToBox(p, b));
 }
 
 double distanceToBox(Vec2 p, const Aabb& b) {
-  const double dx = std::max(std::max(b.min.x - p.x, 0.0), p.x - b.max.x);
-  const double dy = std::max(std::max(b.min.y - p.y, 0.0), p.y - b.max.y);
-  return std::hypot(dx, dy);
+  const Vec2 gap = gapsToBox(p, b);
+  return std::hypot(gap.x, gap.y);
 }
 
 /// A block meeting at most this many bins has its primitives' bins found by testing each of
@@ -409,8 +412,7 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
   std::vector<std::uint32_t> shoreSegments;
   for (int j = 0; j < bins.perColumn(); ++j)
     for (int i = 0; i < bins.perRow(); ++i)
-      shores[static_cast<std::size_t>(j) * static_cast<std::size_t>(bins.perRow()) +
-             static_cast<std::size_t>(i)] = shoreOf(bins.box(i, j), shoreSegments);
+      shores[bins.at(i, j)] = shoreOf(bins.box(i, j), shoreSegments);
   const auto width = static_cast<std::size_t>(grid.width);
   // The run of samples from (row, col) with its spacing, river candidates and heights.
   const auto runAt = [&](int row, int col) {
