@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace strahler::geometry {
 
@@ -72,26 +73,44 @@ PolygonIndex::PolygonIndex(MultiPolygon polygons, double cellSize)
             static_cast<std::int32_t>(nearestBoundary(c, 3.0 * side).segment);
       }
   }
-  bandHeight_ = grid_.cellSize();
+  // Bands about a segment tall: a band then lists little more than the segments that cross
+  // its lines (a segment is listed in 1 + its height / bandHeight_ bands), and at most about
+  // four bands per segment.
+  bandHeight_ =
+      std::max({meanLength, bounds_.size().y / (4.0 * double(segments_.size()) + 1.0), 1e-9});
   const auto bandCount = static_cast<std::size_t>(std::floor(bounds_.size().y / bandHeight_)) + 1;
-  bands_.resize(bandCount);
-  for (std::uint32_t i = 0; i < segments_.size(); ++i) {
-    const double y0 = std::min(segments_[i].a.y, segments_[i].b.y) - bounds_.min.y;
-    const double y1 = std::max(segments_[i].a.y, segments_[i].b.y) - bounds_.min.y;
-    const auto b0 = static_cast<std::size_t>(std::max(0.0, std::floor(y0 / bandHeight_)));
-    const auto b1 = std::min(bandCount - 1, static_cast<std::size_t>(std::floor(y1 / bandHeight_)));
+  const auto bandsOf = [&](const BoundarySegment& s) {
+    const double y0 = std::min(s.a.y, s.b.y) - bounds_.min.y;
+    const double y1 = std::max(s.a.y, s.b.y) - bounds_.min.y;
+    return std::pair{
+        static_cast<std::size_t>(std::max(0.0, std::floor(y0 / bandHeight_))),
+        std::min(bandCount - 1, static_cast<std::size_t>(std::floor(y1 / bandHeight_)))};
+  };
+  bandBegin_.assign(bandCount + 1, 0);
+  for (const BoundarySegment& s : segments_) {
+    const auto [b0, b1] = bandsOf(s);
     for (std::size_t b = b0; b <= b1; ++b)
-      bands_[b].push_back(i);
+      ++bandBegin_[b + 1];
+  }
+  for (std::size_t b = 0; b < bandCount; ++b)
+    bandBegin_[b + 1] += bandBegin_[b];
+  bandSegments_.resize(bandBegin_.back());
+  std::vector<std::uint32_t> next(bandBegin_.begin(), bandBegin_.end() - 1);
+  for (std::uint32_t i = 0; i < segments_.size(); ++i) {
+    const auto [b0, b1] = bandsOf(segments_[i]);
+    for (std::size_t b = b0; b <= b1; ++b)
+      bandSegments_[next[b]++] = i;
   }
 }
 
 bool PolygonIndex::contains(Vec2 p) const noexcept {
   if (!bounds_.contains(p))
     return false;
-  const auto band =
-      std::min(bands_.size() - 1, static_cast<std::size_t>((p.y - bounds_.min.y) / bandHeight_));
+  const auto band = std::min(bandBegin_.size() - 2,
+                             static_cast<std::size_t>((p.y - bounds_.min.y) / bandHeight_));
   bool inside = false;
-  for (std::uint32_t i : bands_[band]) {
+  for (std::uint32_t k = bandBegin_[band]; k < bandBegin_[band + 1]; ++k) {
+    const std::uint32_t i = bandSegments_[k];
     const Vec2 a = segments_[i].a, b = segments_[i].b;
     if ((a.y > p.y) != (b.y > p.y)) {
       const double x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);

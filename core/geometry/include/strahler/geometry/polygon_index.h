@@ -63,9 +63,11 @@ private:
   std::vector<BoundarySegment> segments_;
   Aabb bounds_;
   GridIndex grid_;
-  // Horizontal bands for ray casting: segments whose y-range meets each band.
+  // Horizontal bands for ray casting: the segments whose y-range meets band b are
+  // bandSegments_[bandBegin_[b] .. bandBegin_[b + 1]).
   double bandHeight_ = 1.0;
-  std::vector<std::vector<std::uint32_t>> bands_;
+  std::vector<std::uint32_t> bandBegin_;
+  std::vector<std::uint32_t> bandSegments_;
   // The grid's cells flattened (offsets into cellSegments_), for the nearest-boundary search,
   // which walks cells itself so it can skip those farther than the best hit so far.
   int nx_ = 1;
