@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <immintrin.h>
 #include <limits>
 
 // Kernels pass kLanes-wide vectors between inlined functions; the ABI note does not apply.
@@ -16,7 +17,9 @@ namespace {
 
 namespace baseline { // SSE2, every x86-64: two doubles per register
 #define STRAHLER_KERNEL_WIDTH 2
+#define STRAHLER_KERNEL_MASK_SSE2
 #include "evaluation_kernels.inc"
+#undef STRAHLER_KERNEL_MASK_SSE2
 #undef STRAHLER_KERNEL_WIDTH
 } // namespace baseline
 
@@ -33,7 +36,9 @@ namespace baselineNoise {
 #pragma GCC target("avx2")
 namespace avx2 { // four doubles per register
 #define STRAHLER_KERNEL_WIDTH 4
+#define STRAHLER_KERNEL_MASK_AVX2
 #include "evaluation_kernels.inc"
+#undef STRAHLER_KERNEL_MASK_AVX2
 #undef STRAHLER_KERNEL_WIDTH
 } // namespace avx2
 #pragma GCC pop_options
@@ -43,7 +48,9 @@ namespace avx2 { // four doubles per register
 namespace avx512 { // eight doubles per register
 #define STRAHLER_KERNEL_WIDTH 8
 #define STRAHLER_KERNEL_WIDE_HASH
+#define STRAHLER_KERNEL_MASK_AVX512
 #include "evaluation_kernels.inc"
+#undef STRAHLER_KERNEL_MASK_AVX512
 #undef STRAHLER_KERNEL_WIDE_HASH
 #undef STRAHLER_KERNEL_WIDTH
 } // namespace avx512
