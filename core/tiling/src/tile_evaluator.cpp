@@ -72,10 +72,11 @@ private:
 /// of such runs.
 class Bins {
 public:
-  /// The box of each run of base::kLanes samples of each row of `grid` (row-major).
-  static std::vector<Aabb> runBoxes(const SampleGrid& grid) {
+  /// The box of each run of base::kLanes samples of each row of `grid` (row-major) into
+  /// `boxes`.
+  static void runBoxes(const SampleGrid& grid, std::vector<Aabb>& boxes) {
     const auto width = static_cast<std::size_t>(grid.width);
-    std::vector<Aabb> boxes;
+    boxes.clear();
     boxes.reserve((width + base::kLanes - 1) / base::kLanes *
                   static_cast<std::size_t>(grid.height));
     for (std::size_t row = 0; row < static_cast<std::size_t>(grid.height); ++row)
@@ -85,19 +86,21 @@ public:
         for (std::size_t k = row * width + c; k < row * width + end; ++k)
           box.add(grid.points[k]);
       }
-    return boxes;
   }
 
-  /// Bins over `grid`, whose run boxes are `runBoxes`; no primitive reaches outside `reach`
-  /// (used when rows or columns are not monotone in the local frame: tiles spanning half the
-  /// globe).
-  Bins(const SampleGrid& grid, std::span<const Aabb> runBoxes, int groups, int rows,
-       const Aabb& reach)
-      : groups_(groups), rows_(rows) {
+  /// Empty bins, to be reset() for a tile.
+  Bins() = default;
+  /// Makes these the bins over `grid`, whose run boxes are `runBoxes`, with nothing added;
+  /// no primitive reaches outside `reach` (used when rows or columns are not monotone in the
+  /// local frame: tiles spanning half the globe). Arrays keep their capacity from tile to tile.
+  void reset(const SampleGrid& grid, std::span<const Aabb> runBoxes, int groups, int rows,
+             const Aabb& reach) {
+    groups_ = groups;
+    rows_ = rows;
     const int runs = (grid.width + base::kLanes - 1) / base::kLanes;
     nx_ = (runs + groups - 1) / groups;
     ny_ = (grid.height + rows - 1) / rows;
-    boxes_.resize(count());
+    boxes_.assign(count(), Aabb{});
     std::vector<std::size_t> columnOfRun(static_cast<std::size_t>(runs));
     for (int q = 0; q < runs; ++q)
       columnOfRun[static_cast<std::size_t>(q)] = static_cast<std::size_t>(q / groups);
@@ -121,6 +124,7 @@ public:
       }
     columns_.emplace(std::move(colLo), std::move(colHi));
     rows_run_.emplace(std::move(rowLo), std::move(rowHi));
+    reachable_.clear();
     if (!monotone())
       for (std::size_t b = 0; b < count(); ++b)
         if (!boxes_[b].empty() && boxes_[b].intersects(reach))
@@ -128,6 +132,8 @@ public:
     terrainBegin_.assign(count() + 1, 0);
     riverBegin_.assign(count() + 1, 0);
     lastRiver_.assign(count(), kNone);
+    terrainCount_ = 0;
+    riverPairs_.clear();
   }
 
   std::size_t count() const noexcept { return static_cast<std::size_t>(nx_) * ny_; }
@@ -212,10 +218,10 @@ public:
     last = riverPairs_.size();
     riverPairs_.push_back({static_cast<std::uint32_t>(bin), {id, first, end}});
   }
+  /// Sorts what was added into the bins' lists.
   void finish() {
-    terrainPairs_.resize(terrainCount_);
-    sortByBin(terrainPairs_, terrainBegin_, terrain_);
-    sortByBin(riverPairs_, riverBegin_, rivers_);
+    sortByBin<std::uint32_t>({terrainPairs_.data(), terrainCount_}, terrainBegin_, terrain_);
+    sortByBin<construction::World::RiverCandidate>(riverPairs_, riverBegin_, rivers_);
   }
 
   std::span<const std::uint32_t> terrain(std::size_t bin) const noexcept {
@@ -234,19 +240,19 @@ private:
 
   /// Stable counting sort of (bin, item) pairs into per-bin lists.
   template <class T>
-  void sortByBin(Pairs<T>& pairs, std::vector<std::uint32_t>& begin, std::vector<T>& items) {
+  void sortByBin(std::span<const std::pair<std::uint32_t, T>> pairs,
+                 std::vector<std::uint32_t>& begin, std::vector<T>& items) {
     for (const auto& [bin, item] : pairs)
       ++begin[bin + 1];
     for (std::size_t b = 0; b < count(); ++b)
       begin[b + 1] += begin[b];
     items.resize(pairs.size());
-    std::vector<std::uint32_t> next(begin.begin(), begin.end() - 1);
+    next_.assign(begin.begin(), begin.end() - 1);
     for (const auto& [bin, item] : pairs)
-      items[next[bin]++] = item;
-    pairs = {};
+      items[next_[bin]++] = item;
   }
 
-  int groups_, rows_, nx_ = 0, ny_ = 0;
+  int groups_ = 1, rows_ = 1, nx_ = 0, ny_ = 0;
   std::vector<Aabb> boxes_;
   std::optional<IntervalRun> columns_, rows_run_;
   std::vector<std::size_t> reachable_; // bins meeting `reach`, when not monotone
@@ -263,6 +269,7 @@ private:
   Pairs<construction::World::RiverCandidate> riverPairs_;
   std::vector<std::size_t> lastRiver_; // per bin: its last entry in riverPairs_, or kNone
   std::vector<std::uint32_t> terrainBegin_, riverBegin_, terrain_;
+  std::vector<std::uint32_t> next_; // sortByBin(): where each bin's next item goes
   std::vector<construction::World::RiverCandidate> rivers_;
 };
 
@@ -355,11 +362,15 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
     local.terrainPrimitives += r.terrainEnd - r.terrainBegin;
     local.riverPrimitives += r.riverEnd - r.riverBegin;
   }
-  const std::vector<Aabb> runBoxes = Bins::runBoxes(grid);
-  Bins bins(grid, runBoxes, groups, rows, reach);
+  // Kept per thread from tile to tile: a tile then neither allocates nor clears the megabytes
+  // of boxes and pairs it is about to write (at most those of the largest tile evaluated).
+  thread_local std::vector<Aabb> runBoxes;
+  thread_local Bins bins, riverBins;
+  Bins::runBoxes(grid, runBoxes);
+  bins.reset(grid, runBoxes, groups, rows, reach);
   // Rivers are thin beside a bin: they get bins one row high, so a run searches only the
   // rivers that come near its own row.
-  Bins riverBins(grid, runBoxes, groups, 1, reach);
+  riverBins.reset(grid, runBoxes, groups, 1, reach);
   // Blocks are ascending and their ranges contiguous, so primitive ids arrive ascending.
   for (std::uint32_t b : blocks) {
     const construction::BlockPrimitives& r = data.blocks[b];
