@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <span>
 #include <utility>
@@ -63,6 +64,33 @@ private:
   std::vector<double> lo_, hi_;
   bool increasing_ = false, decreasing_ = false;
   double origin_ = 0.0, perIndex_ = 0.0; // index ≈ (x − origin) · perIndex
+};
+
+/// A list of ids appended to without a branch on whether to keep each: the id is written
+/// past the end, which then moves or not. Keeps its storage when cleared.
+class IdList {
+public:
+  void clear() noexcept { size_ = 0; }
+  /// Appends `id` if `keep`.
+  void appendIf(std::uint32_t id, bool keep) {
+    if (size_ == capacity_)
+      grow();
+    data_[size_] = id;
+    size_ += static_cast<std::uint32_t>(keep);
+  }
+  std::span<const std::uint32_t> items() const noexcept { return {data_.get(), size_}; }
+
+private:
+  void grow() {
+    const std::uint32_t capacity = std::max<std::uint32_t>(16, 2 * capacity_);
+    auto data = std::make_unique_for_overwrite<std::uint32_t[]>(capacity);
+    std::copy_n(data_.get(), size_, data.get());
+    data_ = std::move(data);
+    capacity_ = capacity;
+  }
+
+  std::unique_ptr<std::uint32_t[]> data_;
+  std::uint32_t size_ = 0, capacity_ = 0;
 };
 
 /// Bins over a tile's samples in index space: a bin is `groups` runs of base::kLanes samples
@@ -129,10 +157,11 @@ public:
       for (std::size_t b = 0; b < count(); ++b)
         if (!boxes_[b].empty() && boxes_[b].intersects(reach))
           reachable_.push_back(b);
-    terrainBegin_.assign(count() + 1, 0);
+    terrain_.resize(std::max(terrain_.size(), count()));
+    for (std::size_t b = 0; b < count(); ++b)
+      terrain_[b].clear();
     riverBegin_.assign(count() + 1, 0);
     lastRiver_.assign(count(), kNone);
-    terrainCount_ = 0;
     riverPairs_.clear();
   }
 
@@ -185,27 +214,19 @@ public:
     forEachBin(rangeOf(support), support, meets, f);
   }
 
-  /// Adds terrain primitive `id` to the list of `bin`. Lists keep the order of addition;
-  /// finish() must follow the last addition.
-  void addTerrain(std::size_t bin, std::uint32_t id) {
-    roomForTerrain(1);
-    terrainPairs_[terrainCount_++] = {static_cast<std::uint32_t>(bin), id};
-  }
+  /// Adds terrain primitive `id` to the list of `bin`. Lists keep the order of addition.
+  void addTerrain(std::size_t bin, std::uint32_t id) { terrain_[bin].appendIf(id, true); }
   /// Adds terrain primitive `id` to every bin of `range` (monotone bins) whose box its disc
   /// (centre, squared radius with slack) meets; without a branch per bin, which would be
   /// mispredicted about every other time.
   void addTerrainDisc(const Range& range, Vec2 center, double reach2, std::uint32_t id) {
-    roomForTerrain(static_cast<std::size_t>(range.size()));
-    std::size_t n = terrainCount_;
     for (int j = range.j0; j < range.j1; ++j)
       for (int i = range.i0; i < range.i1; ++i) {
         const Aabb& b = box(i, j); // empty boxes are +inf..-inf: never met
         const double dx = std::max(std::max(b.min.x - center.x, 0.0), center.x - b.max.x);
         const double dy = std::max(std::max(b.min.y - center.y, 0.0), center.y - b.max.y);
-        terrainPairs_[n] = {static_cast<std::uint32_t>(at(i, j)), id};
-        n += static_cast<std::size_t>(dx * dx + dy * dy <= reach2);
+        terrain_[at(i, j)].appendIf(id, dx * dx + dy * dy <= reach2);
       }
-    terrainCount_ = n;
   }
   /// Adds runs [first, end) of river primitive `id`'s curve to `bin`: rivers must come in
   /// ascending order and each river's runs ascending.
@@ -218,14 +239,13 @@ public:
     last = riverPairs_.size();
     riverPairs_.push_back({static_cast<std::uint32_t>(bin), {id, first, end}});
   }
-  /// Sorts what was added into the bins' lists.
+  /// Sorts the rivers added into the bins' lists; must follow the last addition of a river.
   void finish() {
-    sortByBin<std::uint32_t>({terrainPairs_.data(), terrainCount_}, terrainBegin_, terrain_);
     sortByBin<construction::World::RiverCandidate>(riverPairs_, riverBegin_, rivers_);
   }
 
   std::span<const std::uint32_t> terrain(std::size_t bin) const noexcept {
-    return {terrain_.data() + terrainBegin_[bin], terrain_.data() + terrainBegin_[bin + 1]};
+    return terrain_[bin].items();
   }
   std::span<const construction::World::RiverCandidate> rivers(std::size_t bin) const noexcept {
     return {rivers_.data() + riverBegin_[bin], rivers_.data() + riverBegin_[bin + 1]};
@@ -256,19 +276,10 @@ private:
   std::vector<Aabb> boxes_;
   std::optional<IntervalRun> columns_, rows_run_;
   std::vector<std::size_t> reachable_; // bins meeting `reach`, when not monotone
-  /// Makes room for `more` terrain pairs after the first terrainCount_ (pairs are written
-  /// in place, and the vector grows only now and then: resizing per primitive would clear
-  /// each new pair first).
-  void roomForTerrain(std::size_t more) {
-    if (terrainPairs_.size() < terrainCount_ + more)
-      terrainPairs_.resize(std::max(terrainCount_ + more, 2 * terrainPairs_.size()));
-  }
-
-  Pairs<std::uint32_t> terrainPairs_; // the first terrainCount_ are in use
-  std::size_t terrainCount_ = 0;
   Pairs<construction::World::RiverCandidate> riverPairs_;
   std::vector<std::size_t> lastRiver_; // per bin: its last entry in riverPairs_, or kNone
-  std::vector<std::uint32_t> terrainBegin_, riverBegin_, terrain_;
+  std::vector<IdList> terrain_; // per bin (the first count(); more are kept for larger tiles)
+  std::vector<std::uint32_t> riverBegin_;
   std::vector<std::uint32_t> next_; // sortByBin(): where each bin's next item goes
   std::vector<construction::World::RiverCandidate> rivers_;
 };
