@@ -136,6 +136,10 @@ void nearestSegmentLanes(const SegmentLaneArgs& args) noexcept {
            args);
 }
 
+void insideLanes(const InsideLaneArgs& args) noexcept {
+  runBuild(baseline::insidesLanes, avx2::insidesLanes, avx512::insidesLanes, args);
+}
+
 } // namespace detail
 
 InstructionSet instructionSet() noexcept {

@@ -116,4 +116,19 @@ struct SegmentLaneArgs {
 /// The nearest-segment search compiled for the instruction set in use (same bits on each).
 void nearestSegmentLanes(const SegmentLaneArgs& args) noexcept;
 
+/// Point in land for base::kLanes points that share one ray band of the land's index
+/// (geometry::PolygonIndex::rayBand): onLand[l] becomes 1 where point l lies within `bounds`
+/// and an odd number of the band's segments `ids` cross its ray, else 0; the decisions of
+/// PolygonIndex::contains, made by the same operations.
+struct InsideLaneArgs {
+  const geometry::BoundarySegment* segments = nullptr;
+  std::span<const std::uint32_t> ids;
+  geometry::Aabb bounds;
+  const geometry::Vec2* points = nullptr;
+  double* onLand = nullptr;
+};
+
+/// The point-in-land test compiled for the instruction set in use.
+void insideLanes(const InsideLaneArgs& args) noexcept;
+
 } // namespace strahler::construction::detail

@@ -182,6 +182,25 @@ void World::riversLanes(std::size_t lanes, const Vec2* points,
   }
 }
 
+void World::insideLand(const Vec2* group, double* onLand) const noexcept {
+  constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
+  // A run of a tile's row shares its points' ray band (nearly one y); otherwise, or outside
+  // the land's box (whose bands are clamped), point by point.
+  const geometry::Aabb& bounds = land_.bounds();
+  const double y0 = group[0].y;
+  const bool shared =
+      y0 >= bounds.min.y && y0 <= bounds.max.y && std::all_of(group, group + kLanes, [&](Vec2 p) {
+        return p.y >= bounds.min.y && p.y <= bounds.max.y &&
+               land_.rayBand(p.y).index == land_.rayBand(y0).index;
+      });
+  if (!shared) {
+    for (std::size_t l = 0; l < kLanes; ++l)
+      onLand[l] = land_.contains(group[l]) ? 1.0 : 0.0;
+    return;
+  }
+  detail::insideLanes({land_.segments().data(), land_.rayBand(y0).segments, bounds, group, onLand});
+}
+
 double World::shelfReach() noexcept {
   return kShelfReach;
 }
@@ -300,8 +319,10 @@ void World::finishGroup(const Vec2* group, const double* h, const double* w,
   // find it (the same minimum of the same per-segment values), up to the shelf's reach.
   shore2.fill(kShelfReach * kShelfReach);
   detail::nearestSegmentLanes({land_.segments().data(), *shore.segments, group, shore2.data()});
-  for (std::size_t l = 0; l < kLanes; ++l)
-    onLand[l] = (shore.onLand ? *shore.onLand : land_.contains(group[l])) ? 1.0 : 0.0;
+  if (shore.onLand)
+    onLand.fill(*shore.onLand ? 1.0 : 0.0);
+  else
+    insideLand(group, onLand.data());
   detail::coastLanes(
       {h, w, riverH.data(), riverW.data(), onLand.data(), shore2.data(), out.data()});
   std::copy_n(out.begin(), n, heights.begin());

@@ -103,14 +103,19 @@ PolygonIndex::PolygonIndex(MultiPolygon polygons, double cellSize)
   }
 }
 
+PolygonIndex::RayBand PolygonIndex::rayBand(double y) const noexcept {
+  const auto band =
+      std::min(bandBegin_.size() - 2, static_cast<std::size_t>((y - bounds_.min.y) / bandHeight_));
+  return {
+      band,
+      std::span(bandSegments_).subspan(bandBegin_[band], bandBegin_[band + 1] - bandBegin_[band])};
+}
+
 bool PolygonIndex::contains(Vec2 p) const noexcept {
   if (!bounds_.contains(p))
     return false;
-  const auto band = std::min(bandBegin_.size() - 2,
-                             static_cast<std::size_t>((p.y - bounds_.min.y) / bandHeight_));
   bool inside = false;
-  for (std::uint32_t k = bandBegin_[band]; k < bandBegin_[band + 1]; ++k) {
-    const std::uint32_t i = bandSegments_[k];
+  for (const std::uint32_t i : rayBand(p.y).segments) {
     const Vec2 a = segments_[i].a, b = segments_[i].b;
     if ((a.y > p.y) != (b.y > p.y)) {
       const double x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);

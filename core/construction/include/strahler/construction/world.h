@@ -175,6 +175,9 @@ private:
   void finishGroup(const geometry::Vec2* group, const double* h, const double* w,
                    std::span<const RiverCandidate> rivers, const Shore& shore,
                    std::span<double> heights) const noexcept;
+  /// Whether each of base::kLanes points `group` lies on land (1) or not (0): land().contains()
+  /// in vector code where they share a ray band.
+  void insideLand(const geometry::Vec2* group, double* onLand) const noexcept;
   /// The height at a point `onLand` or not, `shore` metres from the boundary (capped at
   /// CoastShape::kBand on land and shelfReach() at sea), from its terrain and rivers.
   static double shapeCoast(const Sample& terrain, const Sample& rivers, bool onLand,

@@ -4,6 +4,7 @@
 #include "strahler/geometry/polygon.h"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace strahler::geometry {
@@ -43,6 +44,15 @@ public:
 
   /// True when p is inside the multipolygon (inside an outer ring, outside its holes).
   bool contains(Vec2 p) const noexcept;
+  /// The segments contains() tests for points at height y (y within the bounds): those whose
+  /// y-range meets y's horizontal band, with the band's index. A point inside the bounds is
+  /// inside the multipolygon when an odd number of them cross the ray from it towards +x:
+  /// (a.y > y) != (b.y > y) and x < a.x + (y − a.y) / (b.y − a.y) · (b.x − a.x).
+  struct RayBand {
+    std::size_t index = 0;
+    std::span<const std::uint32_t> segments;
+  };
+  RayBand rayBand(double y) const noexcept;
   /// Nearest boundary point to p, searching no farther than maxDistance.
   BoundaryHit nearestBoundary(Vec2 p, double maxDistance) const noexcept;
   /// Distance from p to the boundary, capped at maxDistance.
