@@ -17,10 +17,6 @@ Sample blendSums(double weightedHeight, double weight, int count) noexcept {
   return {weightedHeight / weight, weight / count};
 }
 
-Sample replace(Sample a, Sample b) noexcept {
-  return {(1.0 - b.w) * a.h + b.w * b.h, b.w * b.w + (1.0 - b.w) * a.w};
-}
-
 Sample unite(Sample a, Sample b) noexcept {
   return {std::max(a.h, b.h), std::max(a.w, b.w)};
 }

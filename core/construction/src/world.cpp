@@ -305,7 +305,12 @@ void World::finishGroup(const Vec2* group, const double* h, const double* w,
   std::array<Sample, kLanes> river;
   riversLanes(kLanes, group, rivers, river.data());
   const std::size_t n = heights.size();
-  if (shore.coast != Coast::kUnknown || !shore.segments) { // inland, far at sea, or unknown
+  if (shore.coast == Coast::kInland) { // shapeCoast(), inlined
+    for (std::size_t l = 0; l < n; ++l)
+      heights[l] = replace({h[l], w[l]}, river[l]).h;
+    return;
+  }
+  if (shore.coast != Coast::kUnknown || !shore.segments) { // far at sea, or unknown
     for (std::size_t l = 0; l < n; ++l)
       heights[l] = shapeCoast(group[l], {h[l], w[l]}, river[l], shore.coast);
     return;

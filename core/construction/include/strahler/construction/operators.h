@@ -16,8 +16,11 @@ Sample blend(Sample a, Sample b) noexcept;
 /// count n; w is the mean influence Σ w_i / n, which B applied pairwise gives for n = 2.
 Sample blendSums(double weightedHeight, double weight, int count) noexcept;
 
-/// Replace C(A, B): h = (1 − w_B) h_A + w_B h_B, w = w_B² + (1 − w_B) w_A.
-Sample replace(Sample a, Sample b) noexcept;
+/// Replace C(A, B): h = (1 − w_B) h_A + w_B h_B, w = w_B² + (1 − w_B) w_A. Inline: evaluation
+/// applies it at every sample.
+inline Sample replace(Sample a, Sample b) noexcept {
+  return {(1.0 - b.w) * a.h + b.w * b.h, b.w * b.w + (1.0 - b.w) * a.w};
+}
 
 /// Union U(A, B) as the paper defines it: h = max(h_A, h_B), w = max(w_A, w_B).
 Sample unite(Sample a, Sample b) noexcept;
