@@ -21,10 +21,4 @@ Sample unite(Sample a, Sample b) noexcept {
   return {std::max(a.h, b.h), std::max(a.w, b.w)};
 }
 
-Sample uniteByInfluence(Sample a, Sample b) noexcept {
-  if (a.w != b.w)
-    return a.w > b.w ? a : b;
-  return a.h <= b.h ? a : b;
-}
-
 } // namespace strahler::construction

@@ -229,17 +229,6 @@ double valleyRadius(RiverType type, double width) noexcept {
   return 120.0;
 }
 
-double riverProfile(RiverType type, double width, double depth, double d) noexcept {
-  const double half = 0.5 * width;
-  const bool flat = type == RiverType::kBraided || type == RiverType::kDelta;
-  if (d < half) {
-    const double t2 = (d / half) * (d / half);
-    return -depth * (1.0 - (flat ? t2 * t2 : t2));
-  }
-  static constexpr double kBankSlope[] = {0.3, 0.08, 0.04, 0.02}; // by RiverType
-  return kBankSlope[static_cast<int>(type)] * (d - half);
-}
-
 std::vector<RiverPrimitive> generateRiverPrimitives(const input::Params& params,
                                                     const network::RiverNetwork& network,
                                                     const analysis::NetworkAnalysis& analysis) {

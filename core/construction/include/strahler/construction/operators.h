@@ -26,7 +26,12 @@ inline Sample replace(Sample a, Sample b) noexcept {
 Sample unite(Sample a, Sample b) noexcept;
 
 /// Union by dominant influence: the sample with the larger w (on a tie, the lower h).
-/// strahler joins river primitives with it; see docs/architecture.md for why.
-Sample uniteByInfluence(Sample a, Sample b) noexcept;
+/// strahler joins river primitives with it; see docs/architecture.md for why. Inline, as
+/// replace().
+inline Sample uniteByInfluence(Sample a, Sample b) noexcept {
+  if (a.w != b.w)
+    return a.w > b.w ? a : b;
+  return a.h <= b.h ? a : b;
+}
 
 } // namespace strahler::construction

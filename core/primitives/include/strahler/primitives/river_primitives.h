@@ -22,8 +22,18 @@ double valleyRadius(RiverType type, double width) noexcept;
 
 /// The profile δ(d) across a river, relative to its water surface: a parabolic bed of the
 /// given depth for d < width/2 (flatter for braided rivers and deltas), then banks rising
-/// with the type's slope (steep V for B, gentle for E, nearly flat for D).
-double riverProfile(RiverType type, double width, double depth, double d) noexcept;
+/// with the type's slope (steep V for B, gentle for E, nearly flat for D). Inline: evaluation
+/// applies it at every sample near a river.
+inline double riverProfile(RiverType type, double width, double depth, double d) noexcept {
+  const double half = 0.5 * width;
+  const bool flat = type == RiverType::kBraided || type == RiverType::kDelta;
+  if (d < half) {
+    const double t2 = (d / half) * (d / half);
+    return -depth * (1.0 - (flat ? t2 * t2 : t2));
+  }
+  constexpr double kBankSlope[] = {0.3, 0.08, 0.04, 0.02}; // by RiverType
+  return kBankSlope[static_cast<int>(type)] * (d - half);
+}
 
 /// One river primitive per edge (node → parent), in node order (mouths have none), built
 /// as Section 7.1 describes: tributaries bend to meet the main stem at a node at a right
