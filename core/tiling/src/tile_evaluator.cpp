@@ -66,6 +66,28 @@ private:
   double origin_ = 0.0, perIndex_ = 0.0; // index ≈ (x − origin) · perIndex
 };
 
+/// How far p lies outside box b along x and along y (0 inside; infinite for an empty box),
+/// in a vector of two lanes: GCC compiles a scalar maximum with 0 to a branch, which tests
+/// of many boxes mispredict about every other time.
+base::Vectors<2>::Doubles gapsToBox(Vec2 p, const Aabb& b) noexcept {
+  using Pair = base::Vectors<2>::Doubles;
+  const Pair point{p.x, p.y};
+  const Pair below = Pair{b.min.x, b.min.y} - point, above = point - Pair{b.max.x, b.max.y};
+  const Pair gap = below > above ? below : above;
+  return gap > 0.0 ? gap : Pair{};
+}
+
+/// Squared distance from p to box b (0 inside).
+double distanceToBox2(Vec2 p, const Aabb& b) noexcept {
+  const base::Vectors<2>::Doubles gap = gapsToBox(p, b), gap2 = gap * gap;
+  return gap2[0] + gap2[1];
+}
+
+double distanceToBox(Vec2 p, const Aabb& b) {
+  const base::Vectors<2>::Doubles gap = gapsToBox(p, b);
+  return std::hypot(gap[0], gap[1]);
+}
+
 /// A list of ids appended to without a branch on whether to keep each: the id is written
 /// past the end, which then moves or not. Keeps its storage when cleared.
 class IdList {
@@ -78,6 +100,14 @@ public:
     data_[size_] = id;
     size_ += static_cast<std::uint32_t>(keep);
   }
+  /// Room for `most` more ids: write them from the pointer returned, then call appended().
+  std::uint32_t* room(std::size_t most) {
+    while (size_ + most > capacity_)
+      grow();
+    return data_.get() + size_;
+  }
+  /// Keeps the first `count` ids written into room().
+  void appended(std::size_t count) noexcept { size_ += static_cast<std::uint32_t>(count); }
   std::span<const std::uint32_t> items() const noexcept { return {data_.get(), size_}; }
 
 private:
@@ -222,10 +252,26 @@ public:
   void addTerrainDisc(const Range& range, Vec2 center, double reach2, std::uint32_t id) {
     for (int j = range.j0; j < range.j1; ++j)
       for (int i = range.i0; i < range.i1; ++i) {
+        // Empty boxes are +inf..-inf: never met.
+        terrain_[at(i, j)].appendIf(id, distanceToBox2(center, box(i, j)) <= reach2);
+      }
+  }
+  /// Adds terrain primitives firstId, firstId + 1, … (whose discs are `discs`) to every bin of
+  /// `range` (monotone bins) whose box their disc meets: bin after bin, each list's end kept
+  /// in registers over the primitives, without a branch per test.
+  void addTerrainDiscs(const Range& range, std::span<const TerrainDisc> discs,
+                       std::uint32_t firstId) {
+    for (int j = range.j0; j < range.j1; ++j)
+      for (int i = range.i0; i < range.i1; ++i) {
         const Aabb& b = box(i, j); // empty boxes are +inf..-inf: never met
-        const double dx = std::max(std::max(b.min.x - center.x, 0.0), center.x - b.max.x);
-        const double dy = std::max(std::max(b.min.y - center.y, 0.0), center.y - b.max.y);
-        terrain_[at(i, j)].appendIf(id, dx * dx + dy * dy <= reach2);
+        IdList& list = terrain_[at(i, j)];
+        std::uint32_t* out = list.room(discs.size());
+        std::size_t n = 0;
+        for (std::size_t k = 0; k < discs.size(); ++k) {
+          out[n] = firstId + static_cast<std::uint32_t>(k);
+          n += static_cast<std::size_t>(distanceToBox2(discs[k].center, b) <= discs[k].reach2);
+        }
+        list.appended(n);
       }
   }
   /// Adds runs [first, end) of river primitive `id`'s curve to `bin`: rivers must come in
@@ -284,22 +330,6 @@ private:
   std::vector<construction::World::RiverCandidate> rivers_;
 };
 
-/// How far p lies outside box b along x and along y (0 inside).
-Vec2 gapsToBox(Vec2 p, const Aabb& b) {
-  return {std::max(std::max(b.min.x - p.x, 0.0), p.x - b.max.x),
-          std::max(std::max(b.min.y - p.y, 0.0), p.y - b.max.y)};
-}
-
-/// Squared distance from p to box b (0 inside).
-double distanceToBox2(Vec2 p, const Aabb& b) {
-  return lengthSquared(gapsToBox(p, b));
-}
-
-double distanceToBox(Vec2 p, const Aabb& b) {
-  const Vec2 gap = gapsToBox(p, b);
-  return std::hypot(gap.x, gap.y);
-}
-
 /// A block meeting at most this many bins has its primitives' bins found by testing each of
 /// its bins; more, by searching for each primitive's own range.
 constexpr int kScanBins = 16;
@@ -327,7 +357,11 @@ std::pair<int, int> binShape(const SampleGrid& grid) {
 } // namespace
 
 TileEvaluator::TileEvaluator(const construction::World& world)
-    : world_(world), blocks_(world.data()) {}
+    : world_(world), blocks_(world.data()) {
+  terrainDiscs_.reserve(world.data().terrain.size());
+  for (const primitives::TerrainPrimitive& t : world.data().terrain)
+    terrainDiscs_.push_back({t.center, t.radius * t.radius * (1.0 + 1e-9)});
+}
 
 TileEvaluator::BinShore TileEvaluator::shoreOf(const Aabb& box,
                                                std::vector<std::uint32_t>& segments) const {
@@ -391,6 +425,10 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
     if (range.size() == 1 && bins.monotone())
       for (std::uint32_t i = r.terrainBegin; i < r.terrainEnd; ++i)
         bins.addTerrain(bins.at(range.i0, range.j0), i);
+    else if (range.size() > 0 && range.size() <= kScanBins && bins.monotone())
+      bins.addTerrainDiscs(
+          range, std::span(terrainDiscs_).subspan(r.terrainBegin, r.terrainEnd - r.terrainBegin),
+          r.terrainBegin);
     else if (range.size() > 0)
       for (std::uint32_t i = r.terrainBegin; i < r.terrainEnd; ++i) {
         const primitives::TerrainPrimitive& t = data.terrain[i];
@@ -404,8 +442,7 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
               [&](std::size_t bin) { bins.addTerrain(bin, i); });
           continue;
         }
-        bins.addTerrainDisc(range.size() <= kScanBins ? range : bins.rangeOf(support), t.center,
-                            reach2, i);
+        bins.addTerrainDisc(bins.rangeOf(support), t.center, reach2, i);
       }
     for (std::uint32_t i = r.riverBegin; i < r.riverEnd; ++i) {
       // A bin no run of the curve comes within reach of gets w = 0 from this river.

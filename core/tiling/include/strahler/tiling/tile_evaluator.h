@@ -9,6 +9,13 @@
 
 namespace strahler::tiling {
 
+/// A terrain primitive's disc as binning tests it: its centre and its squared radius with a
+/// relative slack of 1e-9 (extra candidates are harmless: w = 0 beyond the radius).
+struct TerrainDisc {
+  geometry::Vec2 center;
+  double reach2 = 0.0;
+};
+
 /// What one tile's evaluation touched.
 struct TileStats {
   std::size_t blocks = 0;            ///< Blocks whose influence box meets the tile.
@@ -46,6 +53,7 @@ private:
 
   const construction::World& world_;
   BlockIndex blocks_;
+  std::vector<TerrainDisc> terrainDiscs_; // per terrain primitive
 };
 
 } // namespace strahler::tiling
