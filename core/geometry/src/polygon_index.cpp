@@ -65,12 +65,18 @@ PolygonIndex::PolygonIndex(MultiPolygon polygons, double cellSize)
     // Bounded (a few cells) so that building stays linear in the number of cells.
     const double side = grid_.cellSize();
     cellSeed_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), -1);
+    cellClearance_.assign(cellSeed_.size(), 0.0);
+    const double halfDiagonal = side * std::sqrt(0.5);
     for (int y = 0; y < ny_; ++y)
       for (int x = 0; x < nx_; ++x) {
         const Vec2 c{bounds_.min.x + (x + 0.5) * side, bounds_.min.y + (y + 0.5) * side};
-        cellSeed_[static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) +
-                  static_cast<std::size_t>(x)] =
-            static_cast<std::int32_t>(nearestBoundary(c, 3.0 * side).segment);
+        const auto cell = static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) +
+                          static_cast<std::size_t>(x);
+        const BoundaryHit hit = nearestBoundary(c, 3.0 * side);
+        cellSeed_[cell] = static_cast<std::int32_t>(hit.segment);
+        // The distance found (or the search's limit) less the cell's half diagonal, with a
+        // margin far above rounding: no point of the cell is nearer the boundary.
+        cellClearance_[cell] = std::max(0.0, (hit.distance - halfDiagonal) * (1.0 - 1e-9) - 1e-6);
       }
   }
   // Bands about a segment tall: a band then lists little more than the segments that cross
@@ -101,6 +107,37 @@ PolygonIndex::PolygonIndex(MultiPolygon polygons, double cellSize)
     for (std::size_t b = b0; b <= b1; ++b)
       bandSegments_[next[b]++] = i;
   }
+  // A cell clear of the boundary lies wholly on the side of its centre.
+  cellInside_.assign(cellSeed_.size(), false);
+  const double side = grid_.cellSize();
+  for (int y = 0; y < ny_; ++y)
+    for (int x = 0; x < nx_; ++x) {
+      const auto cell =
+          static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(x);
+      cellInside_[cell] =
+          contains({bounds_.min.x + (x + 0.5) * side, bounds_.min.y + (y + 0.5) * side});
+    }
+}
+
+PolygonIndex::Clearance PolygonIndex::clearance(const Aabb& box) const noexcept {
+  const double side = grid_.cellSize();
+  const double x0 = std::floor((box.min.x - bounds_.min.x) / side);
+  const double x1 = std::floor((box.max.x - bounds_.min.x) / side);
+  const double y0 = std::floor((box.min.y - bounds_.min.y) / side);
+  const double y1 = std::floor((box.max.y - bounds_.min.y) / side);
+  if (!(x0 >= 0.0 && y0 >= 0.0 && x1 < nx_ && y1 < ny_ && x0 <= x1 && y0 <= y1))
+    return {};
+  Clearance clear{std::numeric_limits<double>::infinity(),
+                  cellInside_[static_cast<std::size_t>(y0) * static_cast<std::size_t>(nx_) +
+                              static_cast<std::size_t>(x0)]};
+  for (auto y = static_cast<std::size_t>(y0); y <= static_cast<std::size_t>(y1); ++y)
+    for (auto x = static_cast<std::size_t>(x0); x <= static_cast<std::size_t>(x1); ++x) {
+      const std::size_t cell = y * static_cast<std::size_t>(nx_) + x;
+      if (cellInside_[cell] != clear.inside)
+        return {};
+      clear.distance = std::min(clear.distance, cellClearance_[cell]);
+    }
+  return clear;
 }
 
 PolygonIndex::RayBand PolygonIndex::rayBand(double y) const noexcept {

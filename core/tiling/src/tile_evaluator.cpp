@@ -372,6 +372,11 @@ TileEvaluator::BinShore TileEvaluator::shoreOf(const Aabb& box,
   const geometry::PolygonIndex& land = world_.land();
   if (distanceToBox(center, land.bounds()) >= shelf + halfDiagonal)
     return {Coast::kFarSea, false}; // cheap: far from the land's bounding box
+  // Cells of the land's index that keep their distance from the boundary: no search.
+  const geometry::PolygonIndex::Clearance clear = land.clearance(box);
+  if (clear.distance >= (clear.inside ? construction::CoastShape::kBand : shelf) &&
+      clear.distance > 0.0)
+    return {clear.inside ? Coast::kInland : Coast::kFarSea, clear.inside};
   const bool inside = land.contains(center);
   const double reach = (inside ? construction::CoastShape::kBand : shelf) + halfDiagonal;
   const geometry::BoundaryHit hit = land.nearestBoundary(center, reach);

@@ -55,6 +55,31 @@ TEST(PolygonIndex, ContainsAgreesWithBruteForce) {
   }
 }
 
+TEST(PolygonIndex, ClearanceIsALowerBoundOnEveryPointOfTheBox) {
+  const MultiPolygon land = wigglyLand();
+  const PolygonIndex index(land);
+  base::Rng rng(5);
+  int known = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec2 corner{rng.uniform(-15000, 18000), rng.uniform(-15000, 15000)};
+    const Vec2 size{rng.uniform(10, 3000), rng.uniform(10, 3000)};
+    const Aabb box{corner, corner + size};
+    const PolygonIndex::Clearance clear = index.clearance(box);
+    if (clear.distance <= 0.0)
+      continue;
+    ++known;
+    for (int k = 0; k < 20; ++k) {
+      const Vec2 p{rng.uniform(box.min.x, box.max.x), rng.uniform(box.min.y, box.max.y)};
+      ASSERT_GE(bruteDistance(land, p), clear.distance) << p.x << "," << p.y;
+      bool inside = false;
+      for (const Polygon& poly : land)
+        inside |= contains(poly, p);
+      ASSERT_EQ(inside, clear.inside) << p.x << "," << p.y;
+    }
+  }
+  EXPECT_GT(known, 200); // the bound is known for boxes clear of the coast, inside and out
+}
+
 TEST(PolygonIndex, NearestBoundaryAgreesWithBruteForce) {
   const MultiPolygon land = wigglyLand();
   const PolygonIndex index(land);

@@ -59,6 +59,15 @@ public:
   double distanceToBoundary(Vec2 p, double maxDistance) const noexcept {
     return nearestBoundary(p, maxDistance).distance;
   }
+  /// What the index knows cheaply about the boundary near a box: no point of it lies nearer to
+  /// the boundary than `distance` (0: unknown), and all of them lie inside (`inside`) or all
+  /// outside, when `distance` is positive. From bounds kept per cell of the index's grid;
+  /// nothing is known outside the grid.
+  struct Clearance {
+    double distance = 0.0;
+    bool inside = false;
+  };
+  Clearance clearance(const Aabb& box) const noexcept;
   /// Appends to `out` the index of every segment whose bounding box meets `box`, each once,
   /// ascending.
   void segmentsMeeting(const Aabb& box, std::vector<std::uint32_t>& out) const;
@@ -87,6 +96,10 @@ private:
   // Per cell: the segment nearest to its centre within a few cells (-1: none), the first
   // bound of a nearest-boundary search from a point of that cell.
   std::vector<std::int32_t> cellSeed_;
+  // Per cell: how near to the boundary a point of it may come at least (0: unknown), and
+  // whether its centre (then every point, where that is positive) lies inside.
+  std::vector<double> cellClearance_;
+  std::vector<bool> cellInside_;
 };
 
 } // namespace strahler::geometry
