@@ -187,18 +187,16 @@ void World::insideLand(const Vec2* group, double* onLand) const noexcept {
   // A run of a tile's row shares its points' ray band (nearly one y); otherwise, or outside
   // the land's box (whose bands are clamped), point by point.
   const geometry::Aabb& bounds = land_.bounds();
-  const double y0 = group[0].y;
-  const bool shared =
-      y0 >= bounds.min.y && y0 <= bounds.max.y && std::all_of(group, group + kLanes, [&](Vec2 p) {
-        return p.y >= bounds.min.y && p.y <= bounds.max.y &&
-               land_.rayBand(p.y).index == land_.rayBand(y0).index;
-      });
+  const geometry::PolygonIndex::RayBand band = land_.rayBand(group[0].y);
+  const bool shared = std::all_of(group, group + kLanes, [&](Vec2 p) {
+    return p.y >= bounds.min.y && p.y <= bounds.max.y && land_.rayBand(p.y).index == band.index;
+  });
   if (!shared) {
     for (std::size_t l = 0; l < kLanes; ++l)
       onLand[l] = land_.contains(group[l]) ? 1.0 : 0.0;
     return;
   }
-  detail::insideLanes({land_.segments().data(), land_.rayBand(y0).segments, bounds, group, onLand});
+  detail::insideLanes({land_.segments().data(), band.segments, bounds, group, onLand});
 }
 
 double World::shelfReach() noexcept {

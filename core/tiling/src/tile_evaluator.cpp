@@ -83,6 +83,7 @@ double distanceToBox2(Vec2 p, const Aabb& b) noexcept {
   return gap2[0] + gap2[1];
 }
 
+/// Distance from p to box b (0 inside).
 double distanceToBox(Vec2 p, const Aabb& b) {
   const base::Vectors<2>::Doubles gap = gapsToBox(p, b);
   return std::hypot(gap[0], gap[1]);
@@ -108,6 +109,7 @@ public:
   }
   /// Keeps the first `count` ids written into room().
   void appended(std::size_t count) noexcept { size_ += static_cast<std::uint32_t>(count); }
+  /// The ids kept, in the order appended.
   std::span<const std::uint32_t> items() const noexcept { return {data_.get(), size_}; }
 
 private:
@@ -374,8 +376,7 @@ TileEvaluator::BinShore TileEvaluator::shoreOf(const Aabb& box,
     return {Coast::kFarSea, false}; // cheap: far from the land's bounding box
   // Cells of the land's index that keep their distance from the boundary: no search.
   const geometry::PolygonIndex::Clearance clear = land.clearance(box);
-  if (clear.distance >= (clear.inside ? construction::CoastShape::kBand : shelf) &&
-      clear.distance > 0.0)
+  if (clear.distance >= (clear.inside ? construction::CoastShape::kBand : shelf))
     return {clear.inside ? Coast::kInland : Coast::kFarSea, clear.inside};
   const bool inside = land.contains(center);
   const double reach = (inside ? construction::CoastShape::kBand : shelf) + halfDiagonal;
