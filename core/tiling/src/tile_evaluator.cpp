@@ -3,6 +3,7 @@
 #include "strahler/base/lanes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -124,6 +125,9 @@ private:
   std::unique_ptr<std::uint32_t[]> data_;
   std::uint32_t size_ = 0, capacity_ = 0;
 };
+
+/// Most rows of a river's support that Bins::addRiverInColumn() takes.
+constexpr int kColumnRows = 64;
 
 /// Bins over a tile's samples in index space: a bin is `groups` runs of base::kLanes samples
 /// of a row times `rows` rows, so every run of kLanes samples lies in one bin and is evaluated
@@ -275,6 +279,38 @@ public:
         }
         list.appended(n);
       }
+  }
+  /// Adds river primitive `id`, whose support meets the bins of `range` (one column of at most
+  /// kColumnRows rows), to each of those rows that a run of its curve comes within `reach` of,
+  /// with the span of such runs (`chunks`: the runs' boxes). Every run is tested against every
+  /// row by the rows' extents in y, without a branch (the same rows for all the runs, so the
+  /// loops are predicted); a run reaching past the support adds nothing there, as points
+  /// outside it are not searched. Rivers must come in ascending order.
+  void addRiverInColumn(const Range& range, std::uint32_t id, std::span<const Aabb> chunks,
+                        double reach) {
+    const auto rows = static_cast<std::size_t>(range.j1 - range.j0);
+    std::array<double, kColumnRows> low, high;
+    std::array<std::uint32_t, kColumnRows> first, end;
+    for (std::size_t r = 0; r < rows; ++r) {
+      const Aabb& b = box(range.i0, range.j0 + static_cast<int>(r));
+      low[r] = b.min.y;
+      high[r] = b.max.y;
+      first[r] = std::numeric_limits<std::uint32_t>::max();
+      end[r] = 0;
+    }
+    for (std::uint32_t c = 0; c < chunks.size(); ++c) {
+      const double a = chunks[c].min.y - reach, b = chunks[c].max.y + reach;
+      for (std::size_t r = 0; r < rows; ++r) {
+        const bool meets = (high[r] >= a) & (low[r] <= b);
+        first[r] = meets ? std::min(first[r], c) : first[r];
+        end[r] = meets ? c + 1 : end[r];
+      }
+    }
+    for (std::size_t r = 0; r < rows; ++r)
+      if (end[r] > 0)
+        riverPairs_.push_back(
+            {static_cast<std::uint32_t>(at(range.i0, range.j0 + static_cast<int>(r))),
+             {id, first[r], end[r]}});
   }
   /// Adds runs [first, end) of river primitive `id`'s curve to `bin`: rivers must come in
   /// ascending order and each river's runs ascending.
@@ -455,8 +491,10 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
       const auto always = [](const Aabb&) { return true; };
       const std::span<const Aabb> chunks = world_.riverChunks(i);
       const auto all = static_cast<std::uint32_t>(chunks.size());
+      const Aabb& support = world_.riverSupport(i);
+      const Bins::Range supportBins = riverBins.rangeOf(support);
       std::size_t only = 0, meeting = 0;
-      riverBins.forEachBin(world_.riverSupport(i), always, [&](std::size_t bin) {
+      riverBins.forEachBin(supportBins, support, always, [&](std::size_t bin) {
         only = bin;
         ++meeting;
       });
@@ -466,6 +504,11 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
         continue;
       }
       const double riverReach = world_.riverReach(i);
+      if (riverBins.monotone() && supportBins.i1 - supportBins.i0 == 1 &&
+          supportBins.j1 - supportBins.j0 <= kColumnRows) {
+        riverBins.addRiverInColumn(supportBins, i, chunks, riverReach);
+        continue;
+      }
       for (std::uint32_t c = 0; c < all; ++c)
         riverBins.forEachBin(chunks[c].expanded(riverReach), always,
                              [&](std::size_t bin) { riverBins.addRiverChunks(bin, i, c, c + 1); });
