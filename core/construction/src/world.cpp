@@ -187,16 +187,18 @@ void World::insideLand(const Vec2* group, double* onLand) const noexcept {
   // A run of a tile's row shares its points' ray band (nearly one y); otherwise, or outside
   // the land's box (whose bands are clamped), point by point.
   const geometry::Aabb& bounds = land_.bounds();
-  const geometry::PolygonIndex::RayBand band = land_.rayBand(group[0].y);
-  const bool shared = std::all_of(group, group + kLanes, [&](Vec2 p) {
-    return p.y >= bounds.min.y && p.y <= bounds.max.y && land_.rayBand(p.y).index == band.index;
-  });
+  const auto within = [&](Vec2 p) { return p.y >= bounds.min.y && p.y <= bounds.max.y; };
+  const std::optional<geometry::PolygonIndex::RayBand> band =
+      within(group[0]) ? std::optional(land_.rayBand(group[0].y)) : std::nullopt;
+  const bool shared = band && std::all_of(group, group + kLanes, [&](Vec2 p) {
+                        return within(p) && land_.rayBand(p.y).index == band->index;
+                      });
   if (!shared) {
     for (std::size_t l = 0; l < kLanes; ++l)
       onLand[l] = land_.contains(group[l]) ? 1.0 : 0.0;
     return;
   }
-  detail::insideLanes({land_.segments().data(), band.segments, bounds, group, onLand});
+  detail::insideLanes({land_.segments().data(), band->segments, bounds, group, onLand});
 }
 
 double World::shelfReach() noexcept {

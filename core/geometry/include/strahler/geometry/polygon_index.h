@@ -44,8 +44,8 @@ public:
 
   /// True when p is inside the multipolygon (inside an outer ring, outside its holes).
   bool contains(Vec2 p) const noexcept;
-  /// The segments contains() tests for points at height y (y within the bounds): those whose
-  /// y-range meets y's horizontal band, with the band's index. A point inside the bounds is
+  /// The segments contains() tests for points at height y (y within the bounds, required): those
+  /// whose y-range meets y's horizontal band, with the band's index. A point inside the bounds is
   /// inside the multipolygon when an odd number of them cross the ray from it towards +x:
   /// (a.y > y) != (b.y > y) and x < a.x + (y − a.y) / (b.y − a.y) · (b.x − a.x).
   struct RayBand {
