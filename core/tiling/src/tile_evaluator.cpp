@@ -493,11 +493,14 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
       const auto all = static_cast<std::uint32_t>(chunks.size());
       const Aabb& support = world_.riverSupport(i);
       const Bins::Range supportBins = riverBins.rangeOf(support);
-      if (riverBins.monotone() && supportBins.size() <= 1) {
-        // A short river within one bin (or none): all of its curve.
-        if (supportBins.size() == 1 &&
-            riverBins.box(supportBins.i0, supportBins.j0).intersects(support))
-          riverBins.addRiverChunks(riverBins.at(supportBins.i0, supportBins.j0), i, 0, all);
+      std::size_t only = 0, meeting = 0;
+      riverBins.forEachBin(supportBins, support, always, [&](std::size_t bin) {
+        only = bin;
+        ++meeting;
+      });
+      if (meeting <= 1) { // a short river within one bin (or none): all of its curve
+        if (meeting == 1)
+          riverBins.addRiverChunks(only, i, 0, all);
         continue;
       }
       const double riverReach = world_.riverReach(i);
