@@ -83,31 +83,34 @@ World::World(WorldData data)
     terrainReach_ = std::max(terrainReach_, withRoundingMargin(t.radius));
   }
   for (std::uint32_t i = 0; i < data_.rivers.size(); ++i) {
-    riverSupport_.push_back(primitives::supportBox(data_.rivers[i]));
     const std::vector<primitives::CurvePoint>& curve = data_.rivers[i].curve;
-    std::vector<geometry::Aabb> chunks;
+    HotRiver& hot = hotRivers_.emplace_back();
+    hot.support = primitives::supportBox(data_.rivers[i]);
+    hot.radius = data_.rivers[i].radius;
+    hot.chunkBegin = static_cast<std::uint32_t>(chunkBoxes_.size());
     for (std::size_t k = 0; k + 1 < curve.size(); k += detail::kChunk) {
       geometry::Aabb box;
       for (std::size_t j = k; j <= std::min(k + detail::kChunk, curve.size() - 1); ++j)
         box.add(curve[j].position);
-      chunks.push_back(box);
+      chunkBoxes_.push_back(box);
     }
-    riverChunks_.push_back(std::move(chunks));
-    segmentBegin_.push_back(hotSegments_.size());
+    hot.chunkCount = static_cast<std::uint32_t>(chunkBoxes_.size()) - hot.chunkBegin;
+    hot.segmentBegin = static_cast<std::uint32_t>(hotSegments_.size());
     for (std::size_t k = 0; k + 1 < curve.size(); ++k) {
       const Vec2 a = curve[k].position, ab = curve[k + 1].position - a;
       const double length2 = lengthSquared(ab);
       hotSegments_.push_back({a, ab, length2 > 0.0 ? 1.0 / length2 : 0.0, curve[k].elevation,
                               curve[k + 1].elevation - curve[k].elevation});
     }
-    riverGrid_.insert(riverSupport_.back(), i);
+    hot.segmentCount = static_cast<std::uint32_t>(hotSegments_.size()) - hot.segmentBegin;
+    riverGrid_.insert(hot.support, i);
   }
   riverCells_.resize(riverGrid_.cellCount());
   for (std::size_t c = 0; c < riverGrid_.cellCount(); ++c) {
     // Points land in a cell by a rounded division: a little slack around its box.
     const geometry::Aabb box = riverGrid_.cellBox(c).expanded(1e-6 * riverGrid_.cellSize());
     for (const std::uint32_t i : riverGrid_.cell(c)) {
-      const std::span<const geometry::Aabb> chunks = riverChunks_[i];
+      const std::span<const geometry::Aabb> chunks = riverChunks(i);
       const geometry::Aabb near = box.expanded(riverReach(i));
       RiverCandidate candidate{i, 0, 0};
       for (std::uint32_t k = 0; k < chunks.size(); ++k)
@@ -123,7 +126,7 @@ World::World(WorldData data)
 }
 
 double World::riverReach(std::uint32_t i) const noexcept {
-  return withRoundingMargin(data_.rivers[i].radius);
+  return withRoundingMargin(hotRivers_[i].radius);
 }
 
 void World::terrainLanes(std::size_t lanes, const Vec2* first, const Vec2* second,
@@ -149,26 +152,26 @@ void World::riversLanes(std::size_t lanes, const Vec2* points,
   for (std::size_t l = 0; l < lanes; ++l)
     out[l] = {};
   for (const RiverCandidate& c : rivers) {
-    const std::uint32_t i = c.id;
-    const primitives::RiverPrimitive& r = data_.rivers[i];
-    const HotSegment* segments = hotSegments_.data() + segmentBegin_[i];
+    const HotRiver& hot = hotRivers_[c.id];
+    const HotSegment* segments = hotSegments_.data() + hot.segmentBegin;
     const detail::CurveLaneArgs args{
-        r.radius,         riverReach(i),
-        riverSupport_[i], std::span(riverChunks_[i]).subspan(0, c.endChunk),
-        c.firstChunk,     {segments, r.curve.size() - 1},
-        points,           distance.data(),
-        segment.data(),   along.data()};
+        hot.radius,     withRoundingMargin(hot.radius),
+        hot.support,    {chunkBoxes_.data() + hot.chunkBegin, c.endChunk},
+        c.firstChunk,   {segments, hot.segmentCount},
+        points,         distance.data(),
+        segment.data(), along.data()};
     // The points within the river's radius, one bit each: visited without a branch per point.
     for (unsigned found = lanes == 1 ? detail::closestOnCurvePoint(args)
                                      : detail::closestOnCurveLanes(args);
          found != 0; found &= found - 1) {
       const auto l = static_cast<std::size_t>(__builtin_ctz(found));
       const double d = distance[l];
-      if (!(d < r.radius))
+      if (!(d < hot.radius))
         continue; // not searched, or w = 0
-      const double w = primitives::falloff(d * d, r.radius * r.radius);
+      const double w = primitives::falloff(d * d, hot.radius * hot.radius);
       if (w <= 0.0)
         continue;
+      const primitives::RiverPrimitive& r = data_.rivers[c.id];
       // The closest point lies `along[l]` of the way along segment k.
       const auto k = static_cast<std::size_t>(segment[l]);
       const double elevation = segments[k].elevation + segments[k].rise * along[l];

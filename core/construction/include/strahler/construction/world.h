@@ -43,10 +43,12 @@ public:
   /// The vector description.
   const WorldData& data() const noexcept { return data_; }
   /// Bounding box of river primitive i's support.
-  const geometry::Aabb& riverSupport(std::uint32_t i) const noexcept { return riverSupport_[i]; }
+  const geometry::Aabb& riverSupport(std::uint32_t i) const noexcept {
+    return hotRivers_[i].support;
+  }
   /// Boxes of the runs of 8 segments of river primitive i's curve.
   std::span<const geometry::Aabb> riverChunks(std::uint32_t i) const noexcept {
-    return riverChunks_[i];
+    return {chunkBoxes_.data() + hotRivers_[i].chunkBegin, hotRivers_[i].chunkCount};
   }
   /// How near (m) a run of river primitive i's curve must come to a point to shape it: the
   /// river's radius with a margin for rounding (extra runs are harmless, missing ones not).
@@ -66,7 +68,7 @@ public:
   };
   /// River primitive i with every run of its curve.
   RiverCandidate wholeRiver(std::uint32_t i) const noexcept {
-    return {i, 0, static_cast<std::uint32_t>(riverChunks_[i].size())};
+    return {i, 0, hotRivers_[i].chunkCount};
   }
   /// The land with fast point and distance queries.
   const geometry::PolygonIndex& land() const noexcept { return land_; }
@@ -192,14 +194,21 @@ private:
   geometry::GridIndex riverGrid_;
   // Per cell of riverGrid_: its rivers, with the runs of their curves that come near the cell.
   std::vector<std::vector<RiverCandidate>> riverCells_;
-  std::vector<geometry::Aabb> riverSupport_; // per river primitive: its support box
-  // Per river primitive: the box of each run of 8 curve segments, so the closest-point search
-  // skips whole runs far from p instead of testing every segment's box.
-  std::vector<std::vector<geometry::Aabb>> riverChunks_;
-  // The segments of every river curve, river after river; river i's start at segmentBegin_[i].
-  std::vector<HotSegment> hotSegments_;
-  std::vector<std::size_t> segmentBegin_;
-  std::vector<HotTerrain> hot_; // per terrain primitive
+  // What the closest-point search reads of a river primitive first, in one cache line: its
+  // support box, radius, and where its segments and its runs' boxes begin in hotSegments_ and
+  // chunkBoxes_ (river after river).
+  struct alignas(64) HotRiver {
+    geometry::Aabb support;
+    double radius = 0.0;
+    std::uint32_t segmentBegin = 0, segmentCount = 0;
+    std::uint32_t chunkBegin = 0, chunkCount = 0;
+  };
+  std::vector<HotRiver> hotRivers_; // per river primitive
+  // The box of each run of 8 curve segments, so the closest-point search skips whole runs far
+  // from p instead of testing every segment's box.
+  std::vector<geometry::Aabb> chunkBoxes_;
+  std::vector<HotSegment> hotSegments_; // the segments of every river curve
+  std::vector<HotTerrain> hot_;         // per terrain primitive
   double terrainReach_ = 0.0;
   noise::LatticeNoise noise_;
 };
