@@ -155,7 +155,7 @@ void World::riversLanes(std::size_t lanes, const Vec2* points,
     const HotRiver& hot = hotRivers_[c.id];
     const HotSegment* segments = hotSegments_.data() + hot.segmentBegin;
     const detail::CurveLaneArgs args{
-        hot.radius,     withRoundingMargin(hot.radius),
+        hot.radius,     riverReach(c.id),
         hot.support,    {chunkBoxes_.data() + hot.chunkBegin, c.endChunk},
         c.firstChunk,   {segments, hot.segmentCount},
         points,         distance.data(),
