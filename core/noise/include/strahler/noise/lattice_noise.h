@@ -124,10 +124,12 @@ private:
       // lookups in four-entry tables are cheaper here than one in sixteen.
       const Int64s r = index & 3, q = index >> 2;
       const Doubles p = __builtin_shuffle(quadrantCos_, r), s = __builtin_shuffle(quadrantSin_, r);
-      const Int64s swap = (q & 1) != 0, negateU = (q & 2) != 0, negateV = ((q + 1) & 2) != 0;
+      const Int64s swap = (q & 1) != 0;
+      // Negations as a flip of the sign bit, from bit 1 of q and of q + 1 moved to bit 63.
+      const Int64s signU = (q & 2) << 62, signV = ((q + 1) & 2) << 62;
       Doubles u = swap ? y : x, v = swap ? x : y;
-      u = negateU ? -u : u;
-      v = negateV ? -v : v;
+      u = reinterpret_cast<Doubles>(reinterpret_cast<Int64s>(u) ^ signU);
+      v = reinterpret_cast<Doubles>(reinterpret_cast<Int64s>(v) ^ signV);
       return p * u + s * v;
     } else {
       const Doubles* gx = gradients<W>(gradientX_);
