@@ -123,7 +123,15 @@ private:
       // gx·x + gy·y bit for bit (the same products up to sign, added in either order). Two
       // lookups in four-entry tables are cheaper here than one in sixteen.
       const Int64s r = index & 3, q = index >> 2;
-      const Doubles p = __builtin_shuffle(quadrantCos_, r), s = __builtin_shuffle(quadrantSin_, r);
+      // Both lookups by one permutation of 32-bit words, its index built once: the halves of
+      // double r are words 2r and 2r + 1 (GCC would build such an index for each lookup).
+      using Words8 = base::Vectors<8>::Words;
+      const Int64s twice = r + r;
+      const auto halves = reinterpret_cast<Words8>(twice | ((twice + 1) << 32));
+      const auto p = reinterpret_cast<Doubles>(
+          __builtin_shuffle(reinterpret_cast<Words8>(quadrantCos_), halves));
+      const auto s = reinterpret_cast<Doubles>(
+          __builtin_shuffle(reinterpret_cast<Words8>(quadrantSin_), halves));
       const Int64s swap = (q & 1) != 0;
       // Negations as a flip of the sign bit, from bit 1 of q and of q + 1 moved to bit 63.
       const Int64s signU = (q & 2) << 62, signV = ((q + 1) & 2) << 62;
