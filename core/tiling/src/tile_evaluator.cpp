@@ -372,6 +372,9 @@ private:
 /// its bins; more, by searching for each primitive's own range.
 constexpr int kScanBins = 16;
 
+/// Grids of more samples than this (512²) release the per-thread scratch after evaluation.
+constexpr std::size_t kKeptScratchSamples = 512 * 512;
+
 /// A bin with more terrain candidates than this is evaluated point by point.
 constexpr std::size_t kDenseBin = 1024;
 
@@ -450,7 +453,8 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
     local.riverPrimitives += r.riverEnd - r.riverBegin;
   }
   // Kept per thread from tile to tile: a tile then neither allocates nor clears the megabytes
-  // of boxes and pairs it is about to write (at most those of the largest tile evaluated).
+  // of boxes and lists it is about to write. Only up to kKeptScratchSamples samples: a larger
+  // grid releases them (a served thread keeps a few megabytes, not those of its largest tile).
   thread_local std::vector<Aabb> runBoxes;
   thread_local Bins bins, riverBins;
   Bins::runBoxes(grid, runBoxes);
@@ -582,6 +586,11 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
                            first.heights);
     }
     row += paired ? 2 : 1;
+  }
+  if (grid.points.size() > kKeptScratchSamples) {
+    runBoxes = {};
+    bins = Bins{};
+    riverBins = Bins{};
   }
   if (stats)
     *stats = local;

@@ -117,6 +117,23 @@ TEST(TileEvaluator, CoastalTilesEqualTheWholeWorld) {
   }
 }
 
+TEST(TileEvaluator, ScratchKeptOrReleasedBetweenTilesChangesNothing) {
+  // A grid over kKeptScratchSamples samples releases the per-thread scratch; the tiles before
+  // and after it, smaller and larger, evaluate as if each were the first.
+  const construction::World& world = islandWorld();
+  const Vec2 c = world.data().projectionCenter;
+  const SampleGrid large = webScheme().rasterGrid(webTileAt(c.x, c.y, 10), 600);
+  const SampleGrid small = webScheme().rasterGrid(webTileAt(c.x + 0.02, c.y, 12), 64);
+  const std::vector<double> largeFirst = TileEvaluator(world).evaluate(large);
+  const TileEvaluator evaluator(world);
+  const std::vector<double> smallFirst = evaluator.evaluate(small);
+  EXPECT_EQ(evaluator.evaluate(large), largeFirst);
+  EXPECT_EQ(evaluator.evaluate(small), smallFirst);
+  EXPECT_EQ(evaluator.evaluate(large), largeFirst);
+  for (std::size_t k = 0; k < large.points.size(); k += 997)
+    ASSERT_EQ(largeFirst[k], world.height(large.points[k], large.rowSpacing[k / large.width]));
+}
+
 TEST(TileEvaluator, SmallTilesGatherFewPrimitives) {
   const TileEvaluator evaluator(islandWorld());
   const TileScheme s = localScheme();
