@@ -308,7 +308,7 @@ void World::finishGroup(const Vec2* group, const double* h, const double* w,
   std::array<Sample, kLanes> river;
   riversLanes(kLanes, group, rivers, river.data());
   const std::size_t n = heights.size();
-  if (shore.coast == Coast::kInland) { // shapeCoast(), inlined
+  if (shore.coast == Coast::kInland) { // shapeCoast()'s inland case, without a call per sample
     for (std::size_t l = 0; l < n; ++l)
       heights[l] = replace({h[l], w[l]}, river[l]).h;
     return;

@@ -477,18 +477,16 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
           r.terrainBegin);
     else if (range.size() > 0)
       for (std::uint32_t i = r.terrainBegin; i < r.terrainEnd; ++i) {
-        const primitives::TerrainPrimitive& t = data.terrain[i];
-        // Squared, without hypot: the slack (1e-9 relative) only ever admits extra candidates,
-        // which are harmless (w = 0 beyond the radius).
-        const double reach2 = t.radius * t.radius * (1.0 + 1e-9);
-        const Aabb support = Aabb{t.center, t.center}.expanded(t.radius);
+        const TerrainDisc& disc = terrainDiscs_[i];
+        const Aabb support = Aabb{disc.center, disc.center}.expanded(data.terrain[i].radius);
         if (!bins.monotone()) {
           bins.forEachBin(
-              support, [&](const Aabb& box) { return distanceToBox2(t.center, box) <= reach2; },
+              support,
+              [&](const Aabb& box) { return distanceToBox2(disc.center, box) <= disc.reach2; },
               [&](std::size_t bin) { bins.addTerrain(bin, i); });
           continue;
         }
-        bins.addTerrainDisc(bins.rangeOf(support), t.center, reach2, i);
+        bins.addTerrainDisc(bins.rangeOf(support), disc.center, disc.reach2, i);
       }
     for (std::uint32_t i = r.riverBegin; i < r.riverEnd; ++i) {
       // A bin no run of the curve comes within reach of gets w = 0 from this river.

@@ -142,7 +142,7 @@ public:
   void heightsFrom(const PointRun& first, const PointRun& second,
                    std::span<const std::uint32_t> terrain, const Shore& shore) const noexcept;
 
-  /// The fields of a terrain primitive the blend reads, packed (one cache line each).
+  /// The fields of a terrain primitive the blend reads, packed (56 bytes).
   struct HotTerrain {
     geometry::Vec2 center;
     double radius2 = 0.0;        ///< r²
