@@ -1,6 +1,7 @@
 #include "strahler/tiling/tile_evaluator.h"
 
 #include "strahler/base/lanes.h"
+#include "strahler/tiling/key_filter.h"
 
 #include <algorithm>
 #include <array>
@@ -90,39 +91,51 @@ double distanceToBox(Vec2 p, const Aabb& b) {
   return std::hypot(gap[0], gap[1]);
 }
 
-/// A list of ids appended to without a branch on whether to keep each: the id is written
-/// past the end, which then moves or not. Keeps its storage when cleared.
+/// A list of ids, each with a key (a float), appended to without a branch on whether to keep
+/// each: the entry is written past the end, which then moves or not. Keeps its storage when
+/// cleared.
 class IdList {
 public:
   void clear() noexcept { size_ = 0; }
-  /// Appends `id` if `keep`.
-  void appendIf(std::uint32_t id, bool keep) {
+  /// Appends `id` with `key` if `keep`.
+  void appendIf(std::uint32_t id, float key, bool keep) {
     if (size_ == capacity_)
       grow();
-    data_[size_] = id;
+    ids_[size_] = id;
+    keys_[size_] = key;
     size_ += static_cast<std::uint32_t>(keep);
   }
-  /// Room for `most` more ids: write them from the pointer returned, then call appended().
-  std::uint32_t* room(std::size_t most) {
+  /// Where to write up to `most` more entries: write them there, then call appended().
+  struct Room {
+    std::uint32_t* ids;
+    float* keys;
+  };
+  Room room(std::size_t most) {
     while (size_ + most > capacity_)
       grow();
-    return data_.get() + size_;
+    return {ids_.get() + size_, keys_.get() + size_};
   }
-  /// Keeps the first `count` ids written into room().
+  /// Keeps the first `count` entries written into room().
   void appended(std::size_t count) noexcept { size_ += static_cast<std::uint32_t>(count); }
   /// The ids kept, in the order appended.
-  std::span<const std::uint32_t> items() const noexcept { return {data_.get(), size_}; }
+  std::span<const std::uint32_t> items() const noexcept { return {ids_.get(), size_}; }
+  /// Their keys, in the same order.
+  std::span<const float> keys() const noexcept { return {keys_.get(), size_}; }
 
 private:
   void grow() {
     const std::uint32_t capacity = std::max<std::uint32_t>(16, 2 * capacity_);
-    auto data = std::make_unique_for_overwrite<std::uint32_t[]>(capacity);
-    std::copy_n(data_.get(), size_, data.get());
-    data_ = std::move(data);
+    auto ids = std::make_unique_for_overwrite<std::uint32_t[]>(capacity);
+    auto keys = std::make_unique_for_overwrite<float[]>(capacity);
+    std::copy_n(ids_.get(), size_, ids.get());
+    std::copy_n(keys_.get(), size_, keys.get());
+    ids_ = std::move(ids);
+    keys_ = std::move(keys);
     capacity_ = capacity;
   }
 
-  std::unique_ptr<std::uint32_t[]> data_;
+  std::unique_ptr<std::uint32_t[]> ids_;
+  std::unique_ptr<float[]> keys_;
   std::uint32_t size_ = 0, capacity_ = 0;
 };
 
@@ -250,8 +263,11 @@ public:
     forEachBin(rangeOf(support), support, meets, f);
   }
 
-  /// Adds terrain primitive `id` to the list of `bin`. Lists keep the order of addition.
-  void addTerrain(std::size_t bin, std::uint32_t id) { terrain_[bin].appendIf(id, true); }
+  /// Adds terrain primitive `id`, whose centre lies at `y`, to the list of `bin`. Lists keep
+  /// the order of addition.
+  void addTerrain(std::size_t bin, std::uint32_t id, double y) {
+    terrain_[bin].appendIf(id, static_cast<float>(y), true);
+  }
   /// Adds terrain primitive `id` to every bin of `range` (monotone bins) whose box its disc
   /// (centre, squared radius with slack) meets; without a branch per bin, which would be
   /// mispredicted about every other time.
@@ -259,7 +275,8 @@ public:
     for (int j = range.j0; j < range.j1; ++j)
       for (int i = range.i0; i < range.i1; ++i) {
         // Empty boxes are +inf..-inf: never met.
-        terrain_[at(i, j)].appendIf(id, distanceToBox2(center, box(i, j)) <= reach2);
+        terrain_[at(i, j)].appendIf(id, static_cast<float>(center.y),
+                                    distanceToBox2(center, box(i, j)) <= reach2);
       }
   }
   /// Adds terrain primitives firstId, firstId + 1, … (whose discs are `discs`) to every bin of
@@ -271,10 +288,11 @@ public:
       for (int i = range.i0; i < range.i1; ++i) {
         const Aabb& b = box(i, j); // empty boxes are +inf..-inf: never met
         IdList& list = terrain_[at(i, j)];
-        std::uint32_t* out = list.room(discs.size());
+        const IdList::Room out = list.room(discs.size());
         std::size_t n = 0;
         for (std::size_t k = 0; k < discs.size(); ++k) {
-          out[n] = firstId + static_cast<std::uint32_t>(k);
+          out.ids[n] = firstId + static_cast<std::uint32_t>(k);
+          out.keys[n] = static_cast<float>(discs[k].center.y);
           n += static_cast<std::size_t>(distanceToBox2(discs[k].center, b) <= discs[k].reach2);
         }
         list.appended(n);
@@ -330,6 +348,10 @@ public:
 
   std::span<const std::uint32_t> terrain(std::size_t bin) const noexcept {
     return terrain_[bin].items();
+  }
+  /// The y of each of terrain(bin)'s centres, rounded to float.
+  std::span<const float> terrainKeys(std::size_t bin) const noexcept {
+    return terrain_[bin].keys();
   }
   std::span<const construction::World::RiverCandidate> rivers(std::size_t bin) const noexcept {
     return {rivers_.data() + riverBegin_[bin], rivers_.data() + riverBegin_[bin + 1]};
@@ -470,7 +492,7 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
     const Bins::Range range = bins.rangeOf(blocks_.influence(b));
     if (range.size() == 1 && bins.monotone())
       for (std::uint32_t i = r.terrainBegin; i < r.terrainEnd; ++i)
-        bins.addTerrain(bins.at(range.i0, range.j0), i);
+        bins.addTerrain(bins.at(range.i0, range.j0), i, terrainDiscs_[i].center.y);
     else if (range.size() > 0 && range.size() <= kScanBins && bins.monotone())
       bins.addTerrainDiscs(
           range, std::span(terrainDiscs_).subspan(r.terrainBegin, r.terrainEnd - r.terrainBegin),
@@ -483,7 +505,7 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
           bins.forEachBin(
               support,
               [&](const Aabb& box) { return distanceToBox2(disc.center, box) <= disc.reach2; },
-              [&](std::size_t bin) { bins.addTerrain(bin, i); });
+              [&](std::size_t bin) { bins.addTerrain(bin, i, disc.center.y); });
           continue;
         }
         bins.addTerrainDisc(bins.rangeOf(support), disc.center, disc.reach2, i);
@@ -537,11 +559,13 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
   // Where a bin is much taller than a terrain primitive reaches (samples hundreds of metres
   // apart), each run or pair of rows takes only the bin's candidates whose centres lie within
   // World::terrainReach() of its samples in y: the others add exactly nothing, and the list
-  // keeps its order, so the sums keep their bits.
+  // keeps its order, so the sums keep their bits. The lists keep each centre's y beside its
+  // id, so this filter reads two arrays in order (in vector code) and not the blend's records.
   const double terrainReach = world_.terrainReach();
   const bool byRow = rows >= 4 && grid.bounds.size().y / grid.height * rows > 2.0 * terrainReach;
   const std::size_t runsPerRow = (width + base::kLanes - 1) / base::kLanes;
-  std::vector<std::uint32_t> near(byRow ? kDenseBin : 0);
+  std::vector<std::uint32_t> near(byRow ? kDenseBin + kKeyFilterOverrun : 0);
+  const construction::InstructionSet instructions = construction::instructionSet();
   for (int row = 0; row < grid.height;) {
     // Two rows of one bin share their terrain candidates: their runs are evaluated in pairs.
     const bool paired = row + 1 < grid.height && bins.binOf(row + 1, 0) == bins.binOf(row, 0);
@@ -555,12 +579,13 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
         if (paired)
           samples.add(runBoxes[static_cast<std::size_t>(row + 1) * runsPerRow + q]);
         const double low = samples.min.y - terrainReach, high = samples.max.y + terrainReach;
-        std::size_t n = 0;
-        for (const std::uint32_t i : terrain) { // without a branch per candidate
-          const double y = world_.terrainCenterY(i);
-          near[n] = i;
-          n += static_cast<std::size_t>((y >= low) & (y <= high));
-        }
+        // The keys are the centres' y rounded to float: widened by far more than the rounding
+        // of both ends (a relative 2^-24 each), the range keeps every candidate it must.
+        const double slack = (std::fabs(low) + std::fabs(high)) * 0x1p-20 + 1e-3;
+        const auto lowKey = static_cast<float>(low - slack);
+        const auto highKey = static_cast<float>(high + slack);
+        const std::size_t n = keepKeysWithin(bins.terrainKeys(bin), terrain.data(), lowKey, highKey,
+                                             near.data(), instructions);
         terrain = std::span<const std::uint32_t>(near).first(n);
       }
       if (terrain.size() > kDenseBin) {

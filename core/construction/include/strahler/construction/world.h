@@ -56,8 +56,6 @@ public:
   /// How far (m) in y a terrain primitive's centre may lie from a point it shapes: the
   /// largest radius with a margin above rounding (a primitive farther adds exactly nothing).
   double terrainReach() const noexcept { return terrainReach_; }
-  /// The y of terrain primitive i's centre (read where the blend reads it).
-  double terrainCenterY(std::uint32_t i) const noexcept { return hot_[i].center.y; }
   /// A river primitive among the candidates of some points, with the runs of its curve
   /// (riverChunks()) to search: [firstChunk, endChunk) must hold every run that comes within
   /// riverReach() of any of the points.
