@@ -556,13 +556,18 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
                                          riverBins.rivers(riverBins.binOf(row, col)),
                                          {heights.data() + k, n}};
   };
-  // Where a bin is much taller than a terrain primitive reaches (samples hundreds of metres
-  // apart), each run or pair of rows takes only the bin's candidates whose centres lie within
+  // Where a bin is tall beside a terrain primitive's reach (samples tens of metres apart or
+  // more), each run or pair of rows takes only the bin's candidates whose centres lie within
   // World::terrainReach() of its samples in y: the others add exactly nothing, and the list
   // keeps its order, so the sums keep their bits. The lists keep each centre's y beside its
   // id, so this filter reads two arrays in order (in vector code) and not the blend's records.
+  // It pays where it keeps well under all of a bin's candidates (about keptFraction of them;
+  // measured: −1.8 % at 0.78, zoom 11; +1 % at 0.87, zoom 12).
   const double terrainReach = world_.terrainReach();
-  const bool byRow = rows >= 4 && grid.bounds.size().y / grid.height * rows > 2.0 * terrainReach;
+  const double rowHeight = grid.bounds.size().y / grid.height;
+  const double keptFraction = (2.0 * rowHeight + 2.0 * terrainReach) /
+                              (static_cast<double>(rows) * rowHeight + 2.0 * terrainReach);
+  const bool byRow = rows >= 4 && keptFraction < 0.85;
   const std::size_t runsPerRow = (width + base::kLanes - 1) / base::kLanes;
   std::vector<std::uint32_t> near(byRow ? kDenseBin + kKeyFilterOverrun : 0);
   const construction::InstructionSet instructions = construction::instructionSet();
