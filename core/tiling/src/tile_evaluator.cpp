@@ -139,8 +139,8 @@ private:
   std::uint32_t size_ = 0, capacity_ = 0;
 };
 
-/// Most rows of a river's support that Bins::addRiverInColumn() takes.
-constexpr int kColumnRows = 64;
+/// Most bins of a river's support that Bins::addRiverInRange() takes.
+constexpr int kRangeBins = 64;
 
 /// Bins over a tile's samples in index space: a bin is `groups` runs of base::kLanes samples
 /// of a row times `rows` rows, so every run of kLanes samples lies in one bin and is evaluated
@@ -158,10 +158,18 @@ public:
                   static_cast<std::size_t>(grid.height));
     for (std::size_t row = 0; row < static_cast<std::size_t>(grid.height); ++row)
       for (std::size_t c = 0; c < width; c += base::kLanes) {
-        Aabb& box = boxes.emplace_back();
-        const std::size_t end = std::min(width, c + base::kLanes);
-        for (std::size_t k = row * width + c; k < row * width + end; ++k)
-          box.add(grid.points[k]);
+        // Each point's (x, y) as a two-lane vector: the box is their lane-wise least and
+        // greatest (point by point through an Aabb costs several times more).
+        using Pair = base::Vectors<2>::Doubles;
+        const std::size_t first = row * width + c,
+                          end = row * width + std::min(width, c + base::kLanes);
+        Pair least{grid.points[first].x, grid.points[first].y}, greatest = least;
+        for (std::size_t k = first + 1; k < end; ++k) {
+          const Pair p{grid.points[k].x, grid.points[k].y};
+          least = p < least ? p : least;
+          greatest = p > greatest ? p : greatest;
+        }
+        boxes.push_back({{least[0], least[1]}, {greatest[0], greatest[1]}});
       }
   }
 
@@ -298,37 +306,41 @@ public:
         list.appended(n);
       }
   }
-  /// Adds river primitive `id`, whose support meets the bins of `range` (one column of at most
-  /// kColumnRows rows), to each of those rows that a run of its curve comes within `reach` of,
-  /// with the span of such runs (`chunks`: the runs' boxes). Every run is tested against every
-  /// row by the rows' extents in y, without a branch (the same rows for all the runs, so the
+  /// Adds river primitive `id`, whose support meets the bins of `range` (at most kRangeBins
+  /// monotone bins), to each of them that a run of its curve comes within `reach` of, with
+  /// the span of such runs (`chunks`: the runs' boxes). Every run is tested against every bin
+  /// of the range by its box, without a branch (the same bins for all the river's runs, so the
   /// loops are predicted); a run reaching past the support adds nothing there, as points
   /// outside it are not searched. Rivers must come in ascending order.
-  void addRiverInColumn(const Range& range, std::uint32_t id, std::span<const Aabb> chunks,
-                        double reach) {
-    const auto rows = static_cast<std::size_t>(range.j1 - range.j0);
-    std::array<double, kColumnRows> low, high;
-    std::array<std::uint32_t, kColumnRows> first, end;
-    for (std::size_t r = 0; r < rows; ++r) {
-      const Aabb& b = box(range.i0, range.j0 + static_cast<int>(r));
-      low[r] = b.min.y;
-      high[r] = b.max.y;
-      first[r] = std::numeric_limits<std::uint32_t>::max();
-      end[r] = 0;
-    }
+  void addRiverInRange(const Range& range, std::uint32_t id, std::span<const Aabb> chunks,
+                       double reach) {
+    const auto count = static_cast<std::size_t>(range.size());
+    std::array<double, kRangeBins> lowX, highX, lowY, highY;
+    std::array<std::uint32_t, kRangeBins> first, end, bin;
+    std::size_t r = 0;
+    for (int j = range.j0; j < range.j1; ++j)
+      for (int i = range.i0; i < range.i1; ++i, ++r) {
+        const Aabb& b = box(i, j); // empty boxes are +inf..-inf: never met
+        lowX[r] = b.min.x;
+        highX[r] = b.max.x;
+        lowY[r] = b.min.y;
+        highY[r] = b.max.y;
+        first[r] = std::numeric_limits<std::uint32_t>::max();
+        end[r] = 0;
+        bin[r] = static_cast<std::uint32_t>(at(i, j));
+      }
     for (std::uint32_t c = 0; c < chunks.size(); ++c) {
-      const double a = chunks[c].min.y - reach, b = chunks[c].max.y + reach;
-      for (std::size_t r = 0; r < rows; ++r) {
-        const bool meets = (high[r] >= a) & (low[r] <= b);
+      const Aabb near = chunks[c].expanded(reach);
+      for (r = 0; r < count; ++r) {
+        const bool meets = (highX[r] >= near.min.x) & (lowX[r] <= near.max.x) &
+                           (highY[r] >= near.min.y) & (lowY[r] <= near.max.y);
         first[r] = meets ? std::min(first[r], c) : first[r];
         end[r] = meets ? c + 1 : end[r];
       }
     }
-    for (std::size_t r = 0; r < rows; ++r)
+    for (r = 0; r < count; ++r)
       if (end[r] > 0)
-        riverPairs_.push_back(
-            {static_cast<std::uint32_t>(at(range.i0, range.j0 + static_cast<int>(r))),
-             {id, first[r], end[r]}});
+        riverPairs_.push_back({bin[r], {id, first[r], end[r]}});
   }
   /// Adds runs [first, end) of river primitive `id`'s curve to `bin`: rivers must come in
   /// ascending order and each river's runs ascending.
@@ -517,6 +529,10 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
       const auto all = static_cast<std::uint32_t>(chunks.size());
       const Aabb& support = world_.riverSupport(i);
       const Bins::Range supportBins = riverBins.rangeOf(support);
+      if (riverBins.monotone() && supportBins.size() > 1 && supportBins.size() <= kRangeBins) {
+        riverBins.addRiverInRange(supportBins, i, chunks, world_.riverReach(i));
+        continue;
+      }
       std::size_t only = 0, meeting = 0;
       riverBins.forEachBin(supportBins, support, always, [&](std::size_t bin) {
         only = bin;
@@ -528,11 +544,6 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
         continue;
       }
       const double riverReach = world_.riverReach(i);
-      if (riverBins.monotone() && supportBins.i1 - supportBins.i0 == 1 &&
-          supportBins.j1 - supportBins.j0 <= kColumnRows) {
-        riverBins.addRiverInColumn(supportBins, i, chunks, riverReach);
-        continue;
-      }
       for (std::uint32_t c = 0; c < all; ++c)
         riverBins.forEachBin(chunks[c].expanded(riverReach), always,
                              [&](std::size_t bin) { riverBins.addRiverChunks(bin, i, c, c + 1); });
