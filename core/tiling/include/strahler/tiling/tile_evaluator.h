@@ -2,19 +2,13 @@
 
 #include "strahler/construction/world.h"
 #include "strahler/tiling/block_index.h"
+#include "strahler/tiling/candidate_filters.h"
 #include "strahler/tiling/tile_scheme.h"
 
 #include <optional>
 #include <vector>
 
 namespace strahler::tiling {
-
-/// A terrain primitive's disc as binning tests it: its centre and its squared radius with a
-/// relative slack of 1e-9 (extra candidates are harmless: w = 0 beyond the radius).
-struct TerrainDisc {
-  geometry::Vec2 center;
-  double reach2 = 0.0;
-};
 
 /// What one tile's evaluation touched.
 struct TileStats {
@@ -53,7 +47,7 @@ private:
 
   const construction::World& world_;
   BlockIndex blocks_;
-  std::vector<TerrainDisc> terrainDiscs_; // per terrain primitive
+  TerrainDiscs terrainDiscs_; // per terrain primitive
 };
 
 } // namespace strahler::tiling
