@@ -7,6 +7,7 @@
 #include <cmath>
 #include <immintrin.h>
 #include <limits>
+#include <type_traits>
 
 // Kernels pass kLanes-wide vectors between inlined functions; the ABI note does not apply.
 #pragma GCC diagnostic ignored "-Wpsabi"
