@@ -145,12 +145,13 @@ void World::terrainLanes(std::size_t lanes, const Vec2* first, const Vec2* secon
 }
 
 void World::riversLanes(std::size_t lanes, const Vec2* points,
-                        std::span<const RiverCandidate> rivers, Sample* out) const noexcept {
+                        std::span<const RiverCandidate> rivers, double* riverH,
+                        double* riverW) const noexcept {
   constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
   std::array<double, kLanes> distance, along;
   std::array<std::int64_t, kLanes> segment;
   for (std::size_t l = 0; l < lanes; ++l)
-    out[l] = {};
+    riverH[l] = riverW[l] = 0.0;
   for (const RiverCandidate& c : rivers) {
     const HotRiver& hot = hotRivers_[c.id];
     const HotSegment* segments = hotSegments_.data() + hot.segmentBegin;
@@ -180,7 +181,9 @@ void World::riversLanes(std::size_t lanes, const Vec2* points,
       const double width = r.widthUp + (r.widthDown - r.widthUp) * fraction;
       const double depth = r.depthUp + (r.depthDown - r.depthUp) * fraction;
       const Sample s{elevation + primitives::riverProfile(r.type, width, depth, d), w};
-      out[l] = out[l].w > 0.0 ? uniteByInfluence(out[l], s) : s;
+      const Sample united = riverW[l] > 0.0 ? uniteByInfluence({riverH[l], riverW[l]}, s) : s;
+      riverH[l] = united.h;
+      riverW[l] = united.w;
     }
   }
 }
@@ -235,7 +238,7 @@ World::Evaluation World::evaluateFrom(Vec2 p, double spacing,
   double h = 0.0, w = 0.0;
   Sample river;
   terrainLanes(1, &p, nullptr, {spacing, spacing}, terrain, &h, &w);
-  riversLanes(1, &p, rivers, &river);
+  riversLanes(1, &p, rivers, &river.h, &river.w);
   Evaluation e;
   e.terrain = {h, w};
   e.rivers = river;
@@ -305,24 +308,22 @@ void World::finishGroup(const Vec2* group, const double* h, const double* w,
                         std::span<const RiverCandidate> rivers, const Shore& shore,
                         std::span<double> heights) const noexcept {
   constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
-  std::array<Sample, kLanes> river;
-  riversLanes(kLanes, group, rivers, river.data());
+  // Arrays of doubles, not of Samples: GCC zeroes an array of Samples (their members have
+  // initialisers) by `rep stos`, which cost more than the river search at most zooms.
+  std::array<double, kLanes> riverH, riverW;
+  riversLanes(kLanes, group, rivers, riverH.data(), riverW.data());
   const std::size_t n = heights.size();
   if (shore.coast == Coast::kInland) { // shapeCoast()'s inland case, without a call per sample
     for (std::size_t l = 0; l < n; ++l)
-      heights[l] = replace({h[l], w[l]}, river[l]).h;
+      heights[l] = replace({h[l], w[l]}, {riverH[l], riverW[l]}).h;
     return;
   }
   if (shore.coast != Coast::kUnknown || !shore.segments) { // far at sea, or unknown
     for (std::size_t l = 0; l < n; ++l)
-      heights[l] = shapeCoast(group[l], {h[l], w[l]}, river[l], shore.coast);
+      heights[l] = shapeCoast(group[l], {h[l], w[l]}, {riverH[l], riverW[l]}, shore.coast);
     return;
   }
-  std::array<double, kLanes> riverH, riverW, onLand, shore2, out;
-  for (std::size_t l = 0; l < kLanes; ++l) {
-    riverH[l] = river[l].h;
-    riverW[l] = river[l].w;
-  }
+  std::array<double, kLanes> onLand, shore2, out;
   // The squared distance to the nearest of the candidate segments, as the land index would
   // find it (the same minimum of the same per-segment values), up to the shelf's reach.
   shore2.fill(kShelfReach * kShelfReach);

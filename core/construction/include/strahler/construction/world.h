@@ -167,9 +167,11 @@ private:
   void terrainLanes(std::size_t lanes, const geometry::Vec2* first, const geometry::Vec2* second,
                     std::array<double, 2> spacing, std::span<const std::uint32_t> ids, double* h,
                     double* w) const noexcept;
-  /// U(R…) at `lanes` points into out[0 .. lanes): 1 or base::kLanes, as terrainLanes.
+  /// U(R…) at `lanes` points into riverH and riverW [0 .. lanes): 1 or base::kLanes, as
+  /// terrainLanes.
   void riversLanes(std::size_t lanes, const geometry::Vec2* points,
-                   std::span<const RiverCandidate> rivers, Sample* out) const noexcept;
+                   std::span<const RiverCandidate> rivers, double* riverH,
+                   double* riverW) const noexcept;
   /// The rivers, the shore and the height at base::kLanes points `group` (heights.size() of
   /// them are kept) from their terrain blend h, w.
   void finishGroup(const geometry::Vec2* group, const double* h, const double* w,
