@@ -42,13 +42,22 @@ public:
           typename base::Vectors<W>::Doubles py) const noexcept {
     using Doubles = typename base::Vectors<W>::Doubles;
     using Int32s = typename base::Vectors<W>::Int32s;
-    using Words = typename base::Vectors<W>::Words;
-    using UInt64s = typename base::Vectors<W>::UInt64s;
     // floor by truncation then correction (exact below kLaneLimit).
     const Doubles tx = __builtin_convertvector(__builtin_convertvector(px, Int32s), Doubles);
     const Doubles ty = __builtin_convertvector(__builtin_convertvector(py, Int32s), Doubles);
-    const Doubles fx = tx > px ? tx - 1.0 : tx;
-    const Doubles fy = ty > py ? ty - 1.0 : ty;
+    return atLanes<W, kWideHash>(px, py, tx > px ? tx - 1.0 : tx, ty > py ? ty - 1.0 : ty);
+  }
+  /// The same given the floors fx, fy of px, py (a caller whose instruction set has a
+  /// rounding instruction takes them in one).
+  template <int W, bool kWideHash>
+  [[gnu::always_inline]] typename base::Vectors<W>::Doubles
+  atLanes(typename base::Vectors<W>::Doubles px, typename base::Vectors<W>::Doubles py,
+          typename base::Vectors<W>::Doubles fx,
+          typename base::Vectors<W>::Doubles fy) const noexcept {
+    using Doubles = typename base::Vectors<W>::Doubles;
+    using Int32s = typename base::Vectors<W>::Int32s;
+    using Words = typename base::Vectors<W>::Words;
+    using UInt64s = typename base::Vectors<W>::UInt64s;
     const auto dot = [this](auto h, Doubles dx, Doubles dy) __attribute__((always_inline)) {
       return dotGradient<W>(h, dx, dy);
     };
