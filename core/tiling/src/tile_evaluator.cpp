@@ -161,24 +161,33 @@ public:
   /// Makes these the bins over `grid`, whose run boxes are `runBoxes`, with nothing added;
   /// no primitive reaches outside `reach` (used when rows or columns are not monotone in the
   /// local frame: tiles spanning half the globe). Arrays keep their capacity from tile to tile.
+  /// Terrain lists are cleared only `withTerrain` (bins that take rivers only have none).
   void reset(const SampleGrid& grid, std::span<const Aabb> runBoxes, int groups, int rows,
-             const Aabb& reach) {
+             const Aabb& reach, bool withTerrain) {
     groups_ = groups;
     rows_ = rows;
     const int runs = (grid.width + base::kLanes - 1) / base::kLanes;
     nx_ = (runs + groups - 1) / groups;
     ny_ = (grid.height + rows - 1) / rows;
-    boxes_.assign(count(), Aabb{});
-    std::vector<std::size_t> columnOfRun(static_cast<std::size_t>(runs));
-    for (int q = 0; q < runs; ++q)
-      columnOfRun[static_cast<std::size_t>(q)] = static_cast<std::size_t>(q / groups);
-    for (int r = 0; r < grid.height; ++r) {
-      Aabb* binRow = boxes_.data() + static_cast<std::size_t>(r / rows) * nx_;
-      const Aabb* run = runBoxes.data() + static_cast<std::size_t>(r) * runs;
-      for (std::size_t q = 0; q < columnOfRun.size(); ++q) {
-        Aabb& box = binRow[columnOfRun[q]];
-        box.add(run[q].min);
-        box.add(run[q].max);
+    if (groups == 1 && rows == 1) {
+      boxes_.assign(runBoxes.begin(), runBoxes.end()); // a bin per run
+    } else {
+      boxes_.assign(count(), Aabb{});
+      std::vector<std::size_t> columnOfRun(static_cast<std::size_t>(runs));
+      for (int q = 0; q < runs; ++q)
+        columnOfRun[static_cast<std::size_t>(q)] = static_cast<std::size_t>(q / groups);
+      // Corners as two-lane vectors (an Aabb grown point by point costs several times more).
+      using Pair = base::Vectors<2>::Doubles;
+      for (int r = 0; r < grid.height; ++r) {
+        Aabb* binRow = boxes_.data() + static_cast<std::size_t>(r / rows) * nx_;
+        const Aabb* run = runBoxes.data() + static_cast<std::size_t>(r) * runs;
+        for (std::size_t q = 0; q < columnOfRun.size(); ++q) {
+          Aabb& box = binRow[columnOfRun[q]];
+          const Pair least{box.min.x, box.min.y}, greatest{box.max.x, box.max.y};
+          const Pair low{run[q].min.x, run[q].min.y}, high{run[q].max.x, run[q].max.y};
+          const Pair min = low < least ? low : least, max = high > greatest ? high : greatest;
+          box = {{min[0], min[1]}, {max[0], max[1]}};
+        }
       }
     }
     std::vector<double> colLo(nx_, kInf), colHi(nx_, -kInf), rowLo(ny_, kInf), rowHi(ny_, -kInf);
@@ -197,9 +206,11 @@ public:
       for (std::size_t b = 0; b < count(); ++b)
         if (!boxes_[b].empty() && boxes_[b].intersects(reach))
           reachable_.push_back(b);
-    terrain_.resize(std::max(terrain_.size(), count()));
-    for (std::size_t b = 0; b < count(); ++b)
-      terrain_[b].clear();
+    if (withTerrain) {
+      terrain_.resize(std::max(terrain_.size(), count()));
+      for (std::size_t b = 0; b < count(); ++b)
+        terrain_[b].clear();
+    }
     riverBegin_.assign(count() + 1, 0);
     lastRiver_.assign(count(), kNone);
     riverPairs_.clear();
@@ -470,10 +481,10 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
   thread_local std::vector<Aabb> runBoxes;
   thread_local Bins bins, riverBins;
   Bins::runBoxes(grid, runBoxes);
-  bins.reset(grid, runBoxes, groups, rows, reach);
+  bins.reset(grid, runBoxes, groups, rows, reach, true);
   // Rivers are thin beside a bin: they get bins one row high, so a run searches only the
   // rivers that come near its own row.
-  riverBins.reset(grid, runBoxes, groups, 1, reach);
+  riverBins.reset(grid, runBoxes, groups, 1, reach, false);
   const construction::InstructionSet instructions = construction::instructionSet();
   // Blocks are ascending and their ranges contiguous, so primitive ids arrive ascending.
   for (std::uint32_t b : blocks) {
