@@ -8,8 +8,11 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numeric>
+#include <vector>
 
 namespace strahler {
 namespace {
@@ -93,6 +96,47 @@ void BM_TileAllPrimitives(benchmark::State& state) {
                                                    benchmark::Counter::kIsIterationInvariantRate);
 }
 
+/// The median over the 3×3 tiles around the island's centre at zoom range(0) (what a viewer
+/// there loads): each tile's median of range(1) evaluations, tiles interleaved so that the
+/// machine's drift hits them alike; reported per tile as "median_ms" beside the centre tile's
+/// ("centre_ms").
+void BM_TileNeighbourhood(benchmark::State& state) {
+  const Fixture& f = fixture();
+  const int z = static_cast<int>(state.range(0));
+  const tiling::TileId centre = tileAt(z);
+  std::vector<tiling::SampleGrid> grids;
+  std::size_t centreIndex = 0;
+  for (std::int64_t dy = -1; dy <= 1; ++dy)
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      const tiling::TileId t{z, centre.x + dx, centre.y + dy};
+      if (!f.web.contains(t))
+        continue;
+      if (dx == 0 && dy == 0)
+        centreIndex = grids.size();
+      grids.push_back(f.web.rasterGrid(t, 256));
+    }
+  std::vector<std::vector<double>> ms(grids.size());
+  for (auto _ : state)
+    for (std::int64_t r = 0; r < state.range(1); ++r)
+      for (std::size_t g = 0; g < grids.size(); ++g) {
+        const auto start = std::chrono::steady_clock::now();
+        benchmark::DoNotOptimize(f.evaluator.evaluate(grids[g]));
+        ms[g].push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count());
+      }
+  const auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  std::vector<double> perTile;
+  for (const std::vector<double>& m : ms)
+    perTile.push_back(median(m));
+  state.counters["centre_ms"] = perTile[centreIndex];
+  state.counters["median_ms"] = median(perTile);
+  state.counters["max_ms"] = *std::max_element(perTile.begin(), perTile.end());
+}
+
 /// A fixed number of tiles (range(1)) at zoom range(0) in one iteration, for counting with
 /// perf: scripts/bench/tile-counters.sh subtracts the run with 0 tiles (world generation and
 /// start-up), which Google Benchmark's own timing cannot do for a whole process.
@@ -120,6 +164,11 @@ BENCHMARK(BM_TileRestrictedOn)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TileWholeWorld)->Arg(0)->Arg(9)->Arg(13)->Arg(18)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TileAllPrimitives)->Arg(13)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TileNeighbourhood)
+    ->ArgsProduct({{0, 5, 8, 9, 10, 11, 12, 13, 15, 18}, {15}})
+    ->ArgNames({"zoom", "runs"})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TileFixedCount)
     ->ArgsProduct({{0, 5, 8, 9, 10, 11, 13, 18}, {0, 300}})
     ->ArgNames({"zoom", "tiles"})
