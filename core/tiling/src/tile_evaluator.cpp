@@ -162,6 +162,8 @@ public:
   /// no primitive reaches outside `reach` (used when rows or columns are not monotone in the
   /// local frame: tiles spanning half the globe). Arrays keep their capacity from tile to tile.
   /// Terrain lists are cleared only `withTerrain` (bins that take rivers only have none).
+  /// Bins of one run each (groups and rows 1) use `runBoxes` as their boxes: it must outlive
+  /// their use.
   void reset(const SampleGrid& grid, std::span<const Aabb> runBoxes, int groups, int rows,
              const Aabb& reach, bool withTerrain) {
     groups_ = groups;
@@ -170,9 +172,10 @@ public:
     nx_ = (runs + groups - 1) / groups;
     ny_ = (grid.height + rows - 1) / rows;
     if (groups == 1 && rows == 1) {
-      boxes_.assign(runBoxes.begin(), runBoxes.end()); // a bin per run
+      boxView_ = runBoxes; // a bin per run: the runs' own boxes
     } else {
       boxes_.assign(count(), Aabb{});
+      boxView_ = boxes_;
       std::vector<std::size_t> columnOfRun(static_cast<std::size_t>(runs));
       for (int q = 0; q < runs; ++q)
         columnOfRun[static_cast<std::size_t>(q)] = static_cast<std::size_t>(q / groups);
@@ -204,7 +207,7 @@ public:
     reachable_.clear();
     if (!monotone())
       for (std::size_t b = 0; b < count(); ++b)
-        if (!boxes_[b].empty() && boxes_[b].intersects(reach))
+        if (!boxView_[b].empty() && boxView_[b].intersects(reach))
           reachable_.push_back(b);
     if (withTerrain) {
       terrain_.resize(std::max(terrain_.size(), count()));
@@ -222,7 +225,7 @@ public:
            static_cast<std::size_t>(col / base::kLanes / groups_);
   }
   const Aabb& box(int i, int j) const noexcept {
-    return boxes_[static_cast<std::size_t>(j) * nx_ + i];
+    return boxView_[static_cast<std::size_t>(j) * nx_ + i];
   }
 
   /// Bins [i0, i1) × [j0, j1) of a box: columns and rows that meet it (all of them when
@@ -249,7 +252,7 @@ public:
   void forEachBin(const Range& range, const Aabb& support, Meets&& meets, F&& f) const {
     if (!monotone()) {
       for (const std::size_t bin : reachable_)
-        if (boxes_[bin].intersects(support) && meets(boxes_[bin]))
+        if (boxView_[bin].intersects(support) && meets(boxView_[bin]))
           f(bin);
       return;
     }
@@ -384,6 +387,7 @@ private:
 
   int groups_ = 1, rows_ = 1, nx_ = 0, ny_ = 0;
   std::vector<Aabb> boxes_;
+  std::span<const Aabb> boxView_; // the bins' boxes: boxes_, or the run boxes given to reset()
   std::optional<IntervalRun> columns_, rows_run_;
   std::vector<std::size_t> reachable_; // bins meeting `reach`, when not monotone
   Pairs<construction::World::RiverCandidate> riverPairs_;
