@@ -131,7 +131,11 @@ private:
       // turns: the dot product is p·u + s·v with (u, v) = (x, y) turned back, and equals
       // gx·x + gy·y bit for bit (the same products up to sign, added in either order). Two
       // lookups in four-entry tables are cheaper here than one in sixteen.
-      const Int64s r = index & 3, q = index >> 2;
+      // index is 0..15: shifts as unsigned (AVX2 has no 64-bit arithmetic shift; GCC built one
+      // of three instructions).
+      using UInt64s = typename base::Vectors<W>::UInt64s;
+      const Int64s r = index & 3;
+      const auto q = reinterpret_cast<Int64s>(reinterpret_cast<UInt64s>(index) >> 2);
       // Both lookups by one permutation of 32-bit words, its index built once: the halves of
       // double r are words 2r and 2r + 1 (GCC would build such an index for each lookup).
       using Words8 = base::Vectors<8>::Words;
@@ -141,7 +145,7 @@ private:
           __builtin_shuffle(reinterpret_cast<Words8>(quadrantCos_), halves));
       const auto s = reinterpret_cast<Doubles>(
           __builtin_shuffle(reinterpret_cast<Words8>(quadrantSin_), halves));
-      const Int64s swap = (q & 1) != 0;
+      const Int64s swap = (q & 1) == 1; // one comparison (`!= 0` took two)
       // Negations as a flip of the sign bit, from bit 1 of q and of q + 1 moved to bit 63.
       const Int64s signU = (q & 2) << 62, signV = ((q + 1) & 2) << 62;
       Doubles u = swap ? y : x, v = swap ? x : y;
