@@ -268,20 +268,21 @@ public:
     forEachBin(rangeOf(support), support, meets, f);
   }
 
-  /// Adds terrain primitive `id`, whose centre lies at `y`, to the list of `bin`. Lists keep
-  /// the order of addition.
-  void addTerrain(std::size_t bin, std::uint32_t id, double y) {
-    terrain_[bin].appendIf(id, static_cast<float>(y), true);
+  /// Adds terrain primitive `id`, whose key is `key` (TerrainDiscs::keyY), to the list of
+  /// `bin`. Lists keep the order of addition.
+  void addTerrain(std::size_t bin, std::uint32_t id, float key) {
+    terrain_[bin].appendIf(id, key, true);
   }
   /// Adds terrain primitive `id` to every bin of `range` (monotone bins) whose box its disc
   /// (centre, squared radius with slack) meets; without a branch per bin, which would be
   /// mispredicted about every other time.
-  void addTerrainDisc(const Range& range, Vec2 center, double reach2, std::uint32_t id) {
+  void addTerrainDisc(const Range& range, const TerrainDiscs& discs, std::uint32_t id) {
+    const Vec2 center = discs.center(id);
     for (int j = range.j0; j < range.j1; ++j)
       for (int i = range.i0; i < range.i1; ++i) {
         // Empty boxes are +inf..-inf: never met.
-        terrain_[at(i, j)].appendIf(id, static_cast<float>(center.y),
-                                    squaredDistanceToBox(center, box(i, j)) <= reach2);
+        terrain_[at(i, j)].appendIf(id, discs.keyY[id],
+                                    squaredDistanceToBox(center, box(i, j)) <= discs.reach2[id]);
       }
   }
   /// Adds terrain primitives first, first + 1, … first + count − 1 to every bin of `range`
@@ -498,7 +499,7 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
     const Bins::Range range = bins.rangeOf(blocks_.influence(b));
     if (range.size() == 1 && bins.monotone())
       for (std::uint32_t i = r.terrainBegin; i < r.terrainEnd; ++i)
-        bins.addTerrain(bins.at(range.i0, range.j0), i, terrainDiscs_.y[i]);
+        bins.addTerrain(bins.at(range.i0, range.j0), i, terrainDiscs_.keyY[i]);
     else if (range.size() > 0 && range.size() <= kScanBins && bins.monotone())
       bins.addTerrainDiscs(range, terrainDiscs_, r.terrainBegin, r.terrainEnd - r.terrainBegin,
                            instructions);
@@ -510,10 +511,10 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
         if (!bins.monotone()) {
           bins.forEachBin(
               support, [&](const Aabb& box) { return squaredDistanceToBox(center, box) <= reach2; },
-              [&](std::size_t bin) { bins.addTerrain(bin, i, center.y); });
+              [&](std::size_t bin) { bins.addTerrain(bin, i, terrainDiscs_.keyY[i]); });
           continue;
         }
-        bins.addTerrainDisc(bins.rangeOf(support), center, reach2, i);
+        bins.addTerrainDisc(bins.rangeOf(support), terrainDiscs_, i);
       }
     for (std::uint32_t i = r.riverBegin; i < r.riverEnd; ++i) {
       // A bin no run of the curve comes within reach of gets w = 0 from this river.
