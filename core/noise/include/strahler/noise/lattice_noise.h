@@ -67,8 +67,8 @@ public:
         return h & low;
       };
       using Int64s = typename base::Vectors<W>::Int64s;
-      const UInt64s cx = wrap(reinterpret_cast<UInt64s>(__builtin_convertvector(fx, Int64s)));
-      const UInt64s cy = wrap(reinterpret_cast<UInt64s>(__builtin_convertvector(fy, Int64s)));
+      const auto cx = reinterpret_cast<UInt64s>(__builtin_convertvector(fx, Int64s));
+      const auto cy = reinterpret_cast<UInt64s>(__builtin_convertvector(fy, Int64s));
       return cellNoise(cx, cy, px - fx, py - fy, dot, wrap);
     } else {
       const Words cx = __builtin_convertvector(__builtin_convertvector(fx, Int32s), Words);
@@ -87,10 +87,11 @@ private:
   static constexpr std::uint32_t kPrimeY = 0xd8163841u;
 
   /// Final mix of a cell's hash (one xor-shift-multiply round); its top 4 bits pick the
-  /// gradient. `wrap` keeps 32 bits (the identity on 32-bit words).
+  /// gradient. `wrap` keeps 32 bits (the identity on 32-bit words): a product's low 32 bits
+  /// depend only on its operands' low 32 bits, so wrapping after each operation suffices.
   template <class W, class Wrap> static W mix(W h, Wrap&& wrap) noexcept {
     h ^= h >> 15;
-    h = wrap(wrap(h) * 0x2c1b3c6du); // operands of 32 bits: one 32×32→64-bit multiply a lane
+    h = wrap(h * 0x2c1b3c6du);
     return h >> 28;
   }
   /// Perlin's blend of the gradients of the four corners of lattice cell (cx, cy) at offset
@@ -101,8 +102,8 @@ private:
   template <class D, class W, class Dot, class Wrap>
   [[gnu::always_inline]] D cellNoise(W cx, W cy, D x, D y, Dot&& dot, Wrap&& wrap) const noexcept {
     // (c + 1)·P = c·P + P modulo 2^32: one multiplication per axis.
-    const W hx0 = wrap(wrap(cx) * kPrimeX), hx1 = wrap(hx0 + kPrimeX);
-    const W rowHash = wrap(wrap(cy) * kPrimeY);
+    const W hx0 = wrap(cx * kPrimeX), hx1 = wrap(hx0 + kPrimeX);
+    const W rowHash = wrap(cy * kPrimeY);
     const W hy0 = rowHash ^ seed_, hy1 = wrap(rowHash + kPrimeY) ^ seed_;
     const D x1 = x - 1.0, y1 = y - 1.0;
     const D n00 = dot(mix(hx0 ^ hy0, wrap), x, y);
