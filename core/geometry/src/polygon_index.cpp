@@ -55,8 +55,7 @@ PolygonIndex::PolygonIndex(MultiPolygon polygons, double cellSize)
     cellBegin_.push_back(0);
     for (int y = 0; y < ny_; ++y)
       for (int x = 0; x < nx_; ++x) {
-        const Vec2 c{bounds_.min.x + (x + 0.5) * side, bounds_.min.y + (y + 0.5) * side};
-        const std::vector<std::uint32_t>& ids = grid_.cellAt(c);
+        const std::vector<std::uint32_t>& ids = grid_.cellAt(cellCenter(x, y));
         cellSegments_.insert(cellSegments_.end(), ids.begin(), ids.end());
         cellBegin_.push_back(static_cast<std::uint32_t>(cellSegments_.size()));
       }
@@ -69,10 +68,8 @@ PolygonIndex::PolygonIndex(MultiPolygon polygons, double cellSize)
     const double halfDiagonal = side * std::sqrt(0.5);
     for (int y = 0; y < ny_; ++y)
       for (int x = 0; x < nx_; ++x) {
-        const Vec2 c{bounds_.min.x + (x + 0.5) * side, bounds_.min.y + (y + 0.5) * side};
-        const auto cell = static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) +
-                          static_cast<std::size_t>(x);
-        const BoundaryHit hit = nearestBoundary(c, 3.0 * side);
+        const std::size_t cell = cellIndex(x, y);
+        const BoundaryHit hit = nearestBoundary(cellCenter(x, y), 3.0 * side);
         cellSeed_[cell] = static_cast<std::int32_t>(hit.segment);
         // The distance found (or the search's limit) less the cell's half diagonal, with a
         // margin far above rounding: no point of the cell is nearer the boundary.
@@ -109,14 +106,14 @@ PolygonIndex::PolygonIndex(MultiPolygon polygons, double cellSize)
   }
   // A cell clear of the boundary lies wholly on the side of its centre.
   cellInside_.assign(cellSeed_.size(), false);
-  const double side = grid_.cellSize();
   for (int y = 0; y < ny_; ++y)
-    for (int x = 0; x < nx_; ++x) {
-      const auto cell =
-          static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(x);
-      cellInside_[cell] =
-          contains({bounds_.min.x + (x + 0.5) * side, bounds_.min.y + (y + 0.5) * side});
-    }
+    for (int x = 0; x < nx_; ++x)
+      cellInside_[cellIndex(x, y)] = contains(cellCenter(x, y));
+}
+
+Vec2 PolygonIndex::cellCenter(int x, int y) const noexcept {
+  const double side = grid_.cellSize();
+  return {bounds_.min.x + (x + 0.5) * side, bounds_.min.y + (y + 0.5) * side};
 }
 
 PolygonIndex::Clearance PolygonIndex::clearance(const Aabb& box) const noexcept {
@@ -127,12 +124,12 @@ PolygonIndex::Clearance PolygonIndex::clearance(const Aabb& box) const noexcept 
   const double y1 = std::floor((box.max.y - bounds_.min.y) / side);
   if (!(x0 >= 0.0 && y0 >= 0.0 && x1 < nx_ && y1 < ny_ && x0 <= x1 && y0 <= y1))
     return {};
-  Clearance clear{std::numeric_limits<double>::infinity(),
-                  cellInside_[static_cast<std::size_t>(y0) * static_cast<std::size_t>(nx_) +
-                              static_cast<std::size_t>(x0)]};
-  for (auto y = static_cast<std::size_t>(y0); y <= static_cast<std::size_t>(y1); ++y)
-    for (auto x = static_cast<std::size_t>(x0); x <= static_cast<std::size_t>(x1); ++x) {
-      const std::size_t cell = y * static_cast<std::size_t>(nx_) + x;
+  const auto xFirst = static_cast<int>(x0), xLast = static_cast<int>(x1);
+  const auto yFirst = static_cast<int>(y0), yLast = static_cast<int>(y1);
+  Clearance clear{std::numeric_limits<double>::infinity(), cellInside_[cellIndex(xFirst, yFirst)]};
+  for (int y = yFirst; y <= yLast; ++y)
+    for (int x = xFirst; x <= xLast; ++x) {
+      const std::size_t cell = cellIndex(x, y);
       if (cellInside_[cell] != clear.inside)
         return {};
       clear.distance = std::min(clear.distance, cellClearance_[cell]);
@@ -178,9 +175,7 @@ BoundaryHit PolygonIndex::nearestBoundary(Vec2 p, double maxDistance) const noex
   // Start from the segment nearest to the centre of p's cell: a real candidate, so the
   // minimum is unchanged, but the bound is tight from the first ring on.
   if (!cellSeed_.empty()) {
-    const std::int32_t seed =
-        cellSeed_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(nx_) +
-                  static_cast<std::size_t>(cx)];
+    const std::int32_t seed = cellSeed_[cellIndex(cx, cy)];
     if (seed >= 0) {
       const auto i = static_cast<std::uint32_t>(seed);
       const Vec2 q = closestPointOnSegment(p, segments_[i].a, segments_[i].b);
@@ -193,8 +188,7 @@ BoundaryHit PolygonIndex::nearestBoundary(Vec2 p, double maxDistance) const noex
     }
   }
   auto visitCell = [&](int x, int y) {
-    const std::size_t c =
-        static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(x);
+    const std::size_t c = cellIndex(x, y);
     if (cellBegin_[c] == cellBegin_[c + 1])
       return;
     // The closest point of a segment lies in some cell that lists it, so skipping cells no

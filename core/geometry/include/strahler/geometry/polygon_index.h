@@ -79,6 +79,14 @@ private:
   MultiPolygon polygons_;
   std::vector<const Ring*> rings_;
   std::vector<bool> ringIsHole_;
+  /// The centre of cell (x, y) of the flattened grid (the cells of grid_).
+  Vec2 cellCenter(int x, int y) const noexcept;
+  /// The index of cell (x, y) in the per-cell arrays.
+  std::size_t cellIndex(int x, int y) const noexcept {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) +
+           static_cast<std::size_t>(x);
+  }
+
   std::vector<BoundarySegment> segments_;
   Aabb bounds_;
   GridIndex grid_;
