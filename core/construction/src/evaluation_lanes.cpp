@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstddef>
 #include <immintrin.h>
 #include <limits>
 #include <type_traits>
@@ -98,12 +99,12 @@ R runBuild(R (*base)(const Args&) noexcept, R (*withAvx2)(const Args&) noexcept,
 
 } // namespace
 
-unsigned closestOnCurveLanes(const CurveLaneArgs& args) noexcept {
-  return runBuild(baseline::curveLanes, avx2::curveLanes, avx512::curveLanes, args);
+void riversLanes(const RiverLaneArgs& args) noexcept {
+  runBuild(baseline::riversLanes, avx2::riversLanes, avx512::riversLanes, args);
 }
 
-unsigned closestOnCurvePoint(const CurveLaneArgs& args) noexcept {
-  return baseline::curveKernel<baseline::Single>(args, 0);
+void riversPoint(const RiverLaneArgs& args) noexcept {
+  baseline::riversKernel<baseline::Single>(args, 0);
 }
 
 void terrainLanes(const TerrainLaneArgs& args) noexcept {

@@ -54,31 +54,27 @@ void terrainPoint(const TerrainLaneArgs& args) noexcept;
 /// Segments of a river curve per chunk box (World keeps one box per run of kChunk segments).
 inline constexpr std::size_t kChunk = 8;
 
-/// One closest-point search on a river curve for base::kLanes points; points outside
-/// the support box are not searched, nor runs of the curve before firstChunk or after the
-/// chunks given. Results per lane: the distance to the curve (infinity when not searched or
-/// not nearer than the radius) and, where finite, the segment of the closest point and the
-/// fraction of the way along it.
-struct CurveLaneArgs {
-  double radius = 0.0;
-  double reach = 0.0;     ///< World::riverReach(): the radius with a margin above rounding
-  geometry::Aabb support; ///< the river's support box
-  /// The box of each run of kChunk segments, up to the last run searched.
-  std::span<const geometry::Aabb> chunks;
-  std::size_t firstChunk = 0;                  ///< the first run searched
-  std::span<const World::HotSegment> segments; ///< every segment of the curve
+/// The rivers' union U(R…) at base::kLanes points (riversLanes) or one (riversPoint): for each
+/// candidate in turn, the closest point of its curve to each point (points outside its support
+/// box are not searched, nor runs of the curve before firstChunk or from endChunk on; ties keep
+/// the first segment) and, within its radius, its profile's sample (primitives::riverProfile,
+/// weight primitives::falloff), united with the samples before it by influence
+/// (operators.h: uniteByInfluence). Points no river reaches get {0, 0}.
+struct RiverLaneArgs {
+  std::span<const World::RiverCandidate> rivers;
+  const World::HotRiver* hot = nullptr;        ///< per river primitive
+  const geometry::Aabb* chunks = nullptr;      ///< every river's runs' boxes
+  const World::HotSegment* segments = nullptr; ///< every river's segments
   const geometry::Vec2* points = nullptr;
-  double* distance = nullptr;
-  std::int64_t* segment = nullptr;
-  double* along = nullptr;
+  double* riverH = nullptr;
+  double* riverW = nullptr;
 };
 
-/// The closest-point search compiled for the instruction set in use (same bits on each);
-/// returns the points that came within the river's radius (bit l: point l).
-unsigned closestOnCurveLanes(const CurveLaneArgs& args) noexcept;
-/// The closest-point search for one point (lane 0 of the arguments) in scalar registers: the
-/// same bits as a lane of closestOnCurveLanes().
-unsigned closestOnCurvePoint(const CurveLaneArgs& args) noexcept;
+/// The rivers' union compiled for the instruction set in use (same bits on each).
+void riversLanes(const RiverLaneArgs& args) noexcept;
+/// The rivers' union at one point (points[0]) in scalar registers: the same bits as a lane of
+/// riversLanes().
+void riversPoint(const RiverLaneArgs& args) noexcept;
 
 /// The coast shaping at base::kLanes points (World's CoastShape): from the terrain blend
 /// (h, w), the rivers' union (riverH, riverW), whether each point is on land (onLand: 1 or 0)

@@ -84,9 +84,17 @@ World::World(WorldData data)
   }
   for (std::uint32_t i = 0; i < data_.rivers.size(); ++i) {
     const std::vector<primitives::CurvePoint>& curve = data_.rivers[i].curve;
+    const primitives::RiverPrimitive& river = data_.rivers[i];
     HotRiver& hot = hotRivers_.emplace_back();
-    hot.support = primitives::supportBox(data_.rivers[i]);
-    hot.radius = data_.rivers[i].radius;
+    hot.support = primitives::supportBox(river);
+    hot.radius = river.radius;
+    hot.reach = withRoundingMargin(river.radius);
+    hot.widthUp = river.widthUp;
+    hot.widthDown = river.widthDown;
+    hot.depthUp = river.depthUp;
+    hot.depthDown = river.depthDown;
+    hot.bankSlope = primitives::bankSlope(river.type);
+    hot.flatBed = primitives::hasFlatBed(river.type);
     hot.chunkBegin = static_cast<std::uint32_t>(chunkBoxes_.size());
     for (std::size_t k = 0; k + 1 < curve.size(); k += detail::kChunk) {
       geometry::Aabb box;
@@ -126,7 +134,7 @@ World::World(WorldData data)
 }
 
 double World::riverReach(std::uint32_t i) const noexcept {
-  return withRoundingMargin(hotRivers_[i].radius);
+  return hotRivers_[i].reach;
 }
 
 void World::terrainLanes(std::size_t lanes, const Vec2* first, const Vec2* second,
@@ -147,45 +155,17 @@ void World::terrainLanes(std::size_t lanes, const Vec2* first, const Vec2* secon
 void World::riversLanes(std::size_t lanes, const Vec2* points,
                         std::span<const RiverCandidate> rivers, double* riverH,
                         double* riverW) const noexcept {
-  constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
-  std::array<double, kLanes> distance, along;
-  std::array<std::int64_t, kLanes> segment;
-  for (std::size_t l = 0; l < lanes; ++l)
-    riverH[l] = riverW[l] = 0.0;
-  for (const RiverCandidate& c : rivers) {
-    const HotRiver& hot = hotRivers_[c.id];
-    const HotSegment* segments = hotSegments_.data() + hot.segmentBegin;
-    const detail::CurveLaneArgs args{
-        hot.radius,     riverReach(c.id),
-        hot.support,    {chunkBoxes_.data() + hot.chunkBegin, c.endChunk},
-        c.firstChunk,   {segments, hot.segmentCount},
-        points,         distance.data(),
-        segment.data(), along.data()};
-    // The points within the river's radius, one bit each: visited without a branch per point.
-    for (unsigned found = lanes == 1 ? detail::closestOnCurvePoint(args)
-                                     : detail::closestOnCurveLanes(args);
-         found != 0; found &= found - 1) {
-      const auto l = static_cast<std::size_t>(__builtin_ctz(found));
-      const double d = distance[l];
-      if (!(d < hot.radius))
-        continue; // not searched, or w = 0
-      const double w = primitives::falloff(d * d, hot.radius * hot.radius);
-      if (w <= 0.0)
-        continue;
-      const primitives::RiverPrimitive& r = data_.rivers[c.id];
-      // The closest point lies `along[l]` of the way along segment k.
-      const auto k = static_cast<std::size_t>(segment[l]);
-      const double elevation = segments[k].elevation + segments[k].rise * along[l];
-      const double fraction =
-          (static_cast<double>(k) + along[l]) / static_cast<double>(r.curve.size() - 1);
-      const double width = r.widthUp + (r.widthDown - r.widthUp) * fraction;
-      const double depth = r.depthUp + (r.depthDown - r.depthUp) * fraction;
-      const Sample s{elevation + primitives::riverProfile(r.type, width, depth, d), w};
-      const Sample united = riverW[l] > 0.0 ? uniteByInfluence({riverH[l], riverW[l]}, s) : s;
-      riverH[l] = united.h;
-      riverW[l] = united.w;
-    }
+  if (rivers.empty()) { // most runs: no call
+    std::fill_n(riverH, lanes, 0.0);
+    std::fill_n(riverW, lanes, 0.0);
+    return;
   }
+  const detail::RiverLaneArgs args{
+      rivers, hotRivers_.data(), chunkBoxes_.data(), hotSegments_.data(), points, riverH, riverW};
+  if (lanes == 1)
+    detail::riversPoint(args);
+  else
+    detail::riversLanes(args);
 }
 
 void World::insideLand(const Vec2* group, double* onLand) const noexcept {

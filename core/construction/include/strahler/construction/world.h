@@ -157,6 +157,21 @@ public:
     double elevation = 0.0;      ///< water elevation at the start
     double rise = 0.0;           ///< water elevation at the end − at the start
   };
+  /// What evaluation reads of a river primitive: the closest-point search's fields in one
+  /// cache line, its profile's in the next.
+  struct alignas(64) HotRiver {
+    geometry::Aabb support;                           ///< the support's box
+    double radius = 0.0;                              ///< r
+    double reach = 0.0;                               ///< riverReach()
+    std::uint32_t segmentBegin = 0, segmentCount = 0; ///< its segments, river after river
+    std::uint32_t chunkBegin = 0, chunkCount = 0;     ///< its runs' boxes, river after river
+    alignas(64) double widthUp = 0.0;                 ///< channel width upstream, m
+    double widthDown = 0.0;                           ///< ... and downstream
+    double depthUp = 0.0;                             ///< channel depth upstream, m
+    double depthDown = 0.0;                           ///< ... and downstream
+    double bankSlope = 0.0;                           ///< primitives::bankSlope() of its type
+    bool flatBed = false;                             ///< primitives::hasFlatBed() of its type
+  };
   /// Largest fBm gain evaluated (keeps octave amplitudes decreasing).
   static constexpr double kMaxRoughness = 0.95;
 
@@ -194,15 +209,6 @@ private:
   geometry::GridIndex riverGrid_;
   // Per cell of riverGrid_: its rivers, with the runs of their curves that come near the cell.
   std::vector<std::vector<RiverCandidate>> riverCells_;
-  // What the closest-point search reads of a river primitive first, in one cache line: its
-  // support box, radius, and where its segments and its runs' boxes begin in hotSegments_ and
-  // chunkBoxes_ (river after river).
-  struct alignas(64) HotRiver {
-    geometry::Aabb support;
-    double radius = 0.0;
-    std::uint32_t segmentBegin = 0, segmentCount = 0;
-    std::uint32_t chunkBegin = 0, chunkCount = 0;
-  };
   std::vector<HotRiver> hotRivers_; // per river primitive
   // The box of each run of 8 curve segments, so the closest-point search skips whole runs far
   // from p instead of testing every segment's box.

@@ -20,19 +20,28 @@ double channelDepth(double flow) noexcept;
 /// Half-width r of the valley a river of this type and width replaces, m.
 double valleyRadius(RiverType type, double width) noexcept;
 
+/// Whether rivers of this type have the flatter bed of riverProfile(): braided rivers, deltas.
+inline bool hasFlatBed(RiverType type) noexcept {
+  return type == RiverType::kBraided || type == RiverType::kDelta;
+}
+/// The slope of the banks of riverProfile() for this type (steep V for B, gentle for E,
+/// nearly flat for D).
+inline double bankSlope(RiverType type) noexcept {
+  constexpr double kBankSlope[] = {0.3, 0.08, 0.04, 0.02}; // by RiverType
+  return kBankSlope[static_cast<int>(type)];
+}
+
 /// The profile δ(d) across a river, relative to its water surface: a parabolic bed of the
-/// given depth for d < width/2 (flatter for braided rivers and deltas), then banks rising
-/// with the type's slope (steep V for B, gentle for E, nearly flat for D). Inline: evaluation
-/// applies it at every sample near a river.
+/// given depth for d < width/2 (flatter where hasFlatBed()), then banks rising with the
+/// type's bankSlope(). Inline: evaluation applies it at every sample near a river (its vector
+/// code repeats these operations).
 inline double riverProfile(RiverType type, double width, double depth, double d) noexcept {
   const double half = 0.5 * width;
-  const bool flat = type == RiverType::kBraided || type == RiverType::kDelta;
   if (d < half) {
     const double t2 = (d / half) * (d / half);
-    return -depth * (1.0 - (flat ? t2 * t2 : t2));
+    return -depth * (1.0 - (hasFlatBed(type) ? t2 * t2 : t2));
   }
-  constexpr double kBankSlope[] = {0.3, 0.08, 0.04, 0.02}; // by RiverType
-  return kBankSlope[static_cast<int>(type)] * (d - half);
+  return bankSlope(type) * (d - half);
 }
 
 /// One river primitive per edge (node → parent), in node order (mouths have none), built
