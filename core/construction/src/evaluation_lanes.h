@@ -65,6 +65,7 @@ struct RiverLaneArgs {
   const World::HotRiver* hot = nullptr;        ///< per river primitive
   const geometry::Aabb* chunks = nullptr;      ///< every river's runs' boxes
   const World::HotSegment* segments = nullptr; ///< every river's segments
+  const World::SegmentWater* water = nullptr;  ///< their water surface, as segments
   const geometry::Vec2* points = nullptr;
   double* riverH = nullptr;
   double* riverW = nullptr;

@@ -107,8 +107,8 @@ World::World(WorldData data)
     for (std::size_t k = 0; k + 1 < curve.size(); ++k) {
       const Vec2 a = curve[k].position, ab = curve[k + 1].position - a;
       const double length2 = lengthSquared(ab);
-      hotSegments_.push_back({a, ab, length2 > 0.0 ? 1.0 / length2 : 0.0, curve[k].elevation,
-                              curve[k + 1].elevation - curve[k].elevation});
+      hotSegments_.push_back({a, ab, length2 > 0.0 ? 1.0 / length2 : 0.0});
+      water_.push_back({curve[k].elevation, curve[k + 1].elevation - curve[k].elevation});
     }
     hot.segmentCount = static_cast<std::uint32_t>(hotSegments_.size()) - hot.segmentBegin;
     riverGrid_.insert(hot.support, i);
@@ -160,8 +160,14 @@ void World::riversLanes(std::size_t lanes, const Vec2* points,
     std::fill_n(riverW, lanes, 0.0);
     return;
   }
-  const detail::RiverLaneArgs args{
-      rivers, hotRivers_.data(), chunkBoxes_.data(), hotSegments_.data(), points, riverH, riverW};
+  const detail::RiverLaneArgs args{rivers,
+                                   hotRivers_.data(),
+                                   chunkBoxes_.data(),
+                                   hotSegments_.data(),
+                                   water_.data(),
+                                   points,
+                                   riverH,
+                                   riverW};
   if (lanes == 1)
     detail::riversPoint(args);
   else

@@ -149,13 +149,17 @@ public:
     double amplitude = 0.0;      ///< ≥ 0
     double roughness = 0.0;      ///< fBm gain in [0, kMaxRoughness]
   };
-  /// A segment of a river curve as the closest-point search reads it.
+  /// A segment of a river curve as the closest-point search reads it (40 bytes: the search
+  /// streams them).
   struct HotSegment {
     geometry::Vec2 a;            ///< start
     geometry::Vec2 ab;           ///< end − start
     double inverseLength2 = 0.0; ///< 1 / |ab|² (0 for a segment of length 0)
-    double elevation = 0.0;      ///< water elevation at the start
-    double rise = 0.0;           ///< water elevation at the end − at the start
+  };
+  /// The water surface along a segment of a river curve, read where it is the nearest.
+  struct SegmentWater {
+    double elevation = 0.0; ///< water elevation at the start
+    double rise = 0.0;      ///< water elevation at the end − at the start
   };
   /// What evaluation reads of a river primitive: the closest-point search's fields in one
   /// cache line, its profile's in the next.
@@ -214,6 +218,7 @@ private:
   // from p instead of testing every segment's box.
   std::vector<geometry::Aabb> chunkBoxes_;
   std::vector<HotSegment> hotSegments_; // the segments of every river curve
+  std::vector<SegmentWater> water_;     // their water surface, as hotSegments_
   std::vector<HotTerrain> hot_;         // per terrain primitive
   double terrainReach_ = 0.0;
   noise::LatticeNoise noise_;
