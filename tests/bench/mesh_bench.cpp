@@ -1,13 +1,18 @@
 // Mesh tile costs: building the grid mesh, Draco (.drc) and glTF (.glb) encoding, for
 // 65×65 and 257×257 vertices (target: a 65×65 Draco tile, mesh + encoding, in ≤ 2 ms on one
-// core). Run: build/release/tests/bench/strahler_mesh_bench
+// core), on synthetic terrain at a fixed 1 cm error and on the default world's tiles as the
+// server makes them. Run: build/release/tests/bench/strahler_mesh_bench
 #include "synthetic_terrain.h"
+#include "test_worlds.h"
+#include "tile_service.h"
 
+#include "strahler/construction/world_builder.h"
 #include "strahler/encoding/mesh.h"
 #include "strahler/encoding/mesh_encoder.h"
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <string>
 
 namespace strahler::encoding {
@@ -72,6 +77,33 @@ void BM_DracoTile(benchmark::State& state) {
   }
 }
 
+/// A served .drc tile of the default world (Mallorca) at zoom range(0), 64 quads, over the
+/// island's centre: the time is what the server reports for mesh building and Draco encoding
+/// (RenderedTile::encodeMs: the position error it serves, max(1 cm, spacing / 1000), and its
+/// skirt), not the evaluation before them.
+void BM_ServedDracoTile(benchmark::State& state) {
+  static const app::TileService service(
+      construction::generateWorldData(strahler::testing::mallorcaSpec(), "bench").value());
+  const int z = static_cast<int>(state.range(0));
+  const geometry::Vec2 c = service.world().data().projectionCenter;
+  const double n = std::ldexp(1.0, z), lat = c.y * M_PI / 180.0;
+  app::TileRequest request;
+  request.tile = {z, static_cast<std::int64_t>((c.x + 180.0) / 360.0 * n),
+                  static_cast<std::int64_t>((1.0 - std::asinh(std::tan(lat)) / M_PI) / 2.0 * n)};
+  request.format = app::TileFormat::kDraco;
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    const auto tile = service.render(request);
+    if (!tile.ok()) {
+      state.SkipWithError(tile.error().message.c_str());
+      return;
+    }
+    state.SetIterationTime(tile.value().encodeMs / 1000.0);
+    bytes = tile.value().bytes.size();
+  }
+  state.counters["bytes"] = static_cast<double>(bytes);
+}
+
 void speeds(benchmark::internal::Benchmark* b) {
   b->ArgNames({"n", "speed"});
   for (int quads : {64, 256})
@@ -83,6 +115,13 @@ BENCHMARK(BM_BuildGridMesh)->ArgName("n")->Arg(64)->Arg(256)->Unit(benchmark::kM
 BENCHMARK(BM_EncodeDraco)->Apply(speeds)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_EncodeGlb)->Apply(speeds)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_DracoTile)->Apply(speeds)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ServedDracoTile)
+    ->ArgName("zoom")
+    ->Arg(9)
+    ->Arg(13)
+    ->Arg(18)
+    ->UseManualTime()
+    ->Unit(benchmark::kMicrosecond);
 
 } // namespace
 } // namespace strahler::encoding
