@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <cstddef>
 #include <immintrin.h>
 #include <limits>
 #include <type_traits>

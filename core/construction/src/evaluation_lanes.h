@@ -65,7 +65,8 @@ struct RiverLaneArgs {
   const World::HotRiver* hot = nullptr;        ///< per river primitive
   const geometry::Aabb* chunks = nullptr;      ///< every river's runs' boxes
   const World::HotSegment* segments = nullptr; ///< every river's segments
-  const World::SegmentWater* water = nullptr;  ///< their water surface, as segments
+  /// Per segment, its water elevation at its start, then its rise to its end.
+  const double* water = nullptr;
   const geometry::Vec2* points = nullptr;
   double* riverH = nullptr;
   double* riverW = nullptr;

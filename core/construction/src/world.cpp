@@ -83,8 +83,8 @@ World::World(WorldData data)
     terrainReach_ = std::max(terrainReach_, withRoundingMargin(t.radius));
   }
   for (std::uint32_t i = 0; i < data_.rivers.size(); ++i) {
-    const std::vector<primitives::CurvePoint>& curve = data_.rivers[i].curve;
     const primitives::RiverPrimitive& river = data_.rivers[i];
+    const std::vector<primitives::CurvePoint>& curve = river.curve;
     HotRiver& hot = hotRivers_.emplace_back();
     hot.support = primitives::supportBox(river);
     hot.radius = river.radius;
@@ -108,7 +108,8 @@ World::World(WorldData data)
       const Vec2 a = curve[k].position, ab = curve[k + 1].position - a;
       const double length2 = lengthSquared(ab);
       hotSegments_.push_back({a, ab, length2 > 0.0 ? 1.0 / length2 : 0.0});
-      water_.push_back({curve[k].elevation, curve[k + 1].elevation - curve[k].elevation});
+      water_.push_back(curve[k].elevation);
+      water_.push_back(curve[k + 1].elevation - curve[k].elevation);
     }
     hot.segmentCount = static_cast<std::uint32_t>(hotSegments_.size()) - hot.segmentBegin;
     riverGrid_.insert(hot.support, i);

@@ -156,11 +156,6 @@ public:
     geometry::Vec2 ab;           ///< end − start
     double inverseLength2 = 0.0; ///< 1 / |ab|² (0 for a segment of length 0)
   };
-  /// The water surface along a segment of a river curve, read where it is the nearest.
-  struct SegmentWater {
-    double elevation = 0.0; ///< water elevation at the start
-    double rise = 0.0;      ///< water elevation at the end − at the start
-  };
   /// What evaluation reads of a river primitive: the closest-point search's fields in one
   /// cache line, its profile's in the next.
   struct alignas(64) HotRiver {
@@ -218,8 +213,10 @@ private:
   // from p instead of testing every segment's box.
   std::vector<geometry::Aabb> chunkBoxes_;
   std::vector<HotSegment> hotSegments_; // the segments of every river curve
-  std::vector<SegmentWater> water_;     // their water surface, as hotSegments_
-  std::vector<HotTerrain> hot_;         // per terrain primitive
+  // Per segment of hotSegments_, its water surface (read where it is a point's nearest): the
+  // water elevation at its start, then its rise to its end.
+  std::vector<double> water_;
+  std::vector<HotTerrain> hot_; // per terrain primitive
   double terrainReach_ = 0.0;
   noise::LatticeNoise noise_;
 };

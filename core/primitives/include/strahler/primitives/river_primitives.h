@@ -33,8 +33,8 @@ inline double bankSlope(RiverType type) noexcept {
 
 /// The profile δ(d) across a river, relative to its water surface: a parabolic bed of the
 /// given depth for d < width/2 (flatter where hasFlatBed()), then banks rising with the
-/// type's bankSlope(). Inline: evaluation applies it at every sample near a river (its vector
-/// code repeats these operations).
+/// type's bankSlope(). Evaluation repeats these operations in its vector kernels
+/// (core/construction evaluation_kernels.inc), tested against this definition.
 inline double riverProfile(RiverType type, double width, double depth, double d) noexcept {
   const double half = 0.5 * width;
   if (d < half) {
