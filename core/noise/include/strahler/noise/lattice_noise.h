@@ -126,8 +126,14 @@ private:
               typename base::Vectors<W>::Doubles y) const noexcept {
     using Doubles = typename base::Vectors<W>::Doubles;
     using Int64s = typename base::Vectors<W>::Int64s;
-    const Int64s index = __builtin_convertvector(h, Int64s);
     if constexpr (W == 4) {
+      // The 32-bit hashes zero-extended by one shuffle with zeros (GCC 12 compiles this to one
+      // vpmovzxdq, the conversion to four instructions, in halves); 64-bit hashes as they are.
+      Int64s index;
+      if constexpr (sizeof(h[0]) == 4)
+        index = reinterpret_cast<Int64s>(__builtin_shufflevector(h, H{}, 0, 4, 1, 4, 2, 4, 3, 4));
+      else
+        index = reinterpret_cast<Int64s>(h);
       // Gradient k is gradient k & 3 of the first quadrant, (p, s), turned by k >> 2 quarter
       // turns: the dot product is p·u + s·v with (u, v) = (x, y) turned back, and equals
       // gx·x + gy·y bit for bit (the same products up to sign, added in either order). Two
@@ -154,6 +160,7 @@ private:
       v = reinterpret_cast<Doubles>(reinterpret_cast<Int64s>(v) ^ signV);
       return p * u + s * v;
     } else {
+      const Int64s index = __builtin_convertvector(h, Int64s);
       const Doubles* gx = gradients<W>(gradientX_);
       const Doubles* gy = gradients<W>(gradientY_);
       Doubles ax = __builtin_shuffle(gx[0], gx[1], index),
