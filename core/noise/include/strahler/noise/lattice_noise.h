@@ -47,13 +47,21 @@ public:
     const Doubles ty = __builtin_convertvector(__builtin_convertvector(py, Int32s), Doubles);
     return atLanes<W, kWideHash>(px, py, tx > px ? tx - 1.0 : tx, ty > py ? ty - 1.0 : ty);
   }
+  /// Multiplication of the lattice hash's words by a 32-bit constant (h · c).
+  struct Multiply {
+    template <class V> V operator()(V h, std::uint32_t c) const noexcept { return h * c; }
+  };
+
   /// The same given the floors fx, fy of px, py (a caller whose instruction set has a
-  /// rounding instruction takes them in one).
-  template <int W, bool kWideHash>
+  /// rounding instruction takes them in one). `times(h, c)` multiplies the hash's words by a
+  /// constant; with kWideHash, only each product's low 32 bits are kept, so a caller may
+  /// multiply the low 32 bits of each lane alone (one instruction where 64-bit products take
+  /// three); it must not be marked always_inline (it is inlined once this template is).
+  template <int W, bool kWideHash, class Times = Multiply>
   [[gnu::always_inline]] typename base::Vectors<W>::Doubles
   atLanes(typename base::Vectors<W>::Doubles px, typename base::Vectors<W>::Doubles py,
-          typename base::Vectors<W>::Doubles fx,
-          typename base::Vectors<W>::Doubles fy) const noexcept {
+          typename base::Vectors<W>::Doubles fx, typename base::Vectors<W>::Doubles fy,
+          Times&& times = {}) const noexcept {
     using Doubles = typename base::Vectors<W>::Doubles;
     using Int32s = typename base::Vectors<W>::Int32s;
     using Words = typename base::Vectors<W>::Words;
@@ -69,11 +77,12 @@ public:
       using Int64s = typename base::Vectors<W>::Int64s;
       const auto cx = reinterpret_cast<UInt64s>(__builtin_convertvector(fx, Int64s));
       const auto cy = reinterpret_cast<UInt64s>(__builtin_convertvector(fy, Int64s));
-      return cellNoise(cx, cy, px - fx, py - fy, dot, wrap);
+      return cellNoise(cx, cy, px - fx, py - fy, dot, wrap, times);
     } else {
       const Words cx = __builtin_convertvector(__builtin_convertvector(fx, Int32s), Words);
       const Words cy = __builtin_convertvector(__builtin_convertvector(fy, Int32s), Words);
-      return cellNoise(cx, cy, px - fx, py - fy, dot, [](Words h) { return h; });
+      return cellNoise(
+          cx, cy, px - fx, py - fy, dot, [](Words h) { return h; }, times);
     }
   }
 
@@ -89,9 +98,10 @@ private:
   /// Final mix of a cell's hash (one xor-shift-multiply round); its top 4 bits pick the
   /// gradient. `wrap` keeps 32 bits (the identity on 32-bit words): a product's low 32 bits
   /// depend only on its operands' low 32 bits, so wrapping after each operation suffices.
-  template <class W, class Wrap> static W mix(W h, Wrap&& wrap) noexcept {
+  template <class W, class Wrap, class Times>
+  static W mix(W h, Wrap&& wrap, Times&& times) noexcept {
     h ^= h >> 15;
-    h = wrap(h * 0x2c1b3c6du);
+    h = wrap(times(h, 0x2c1b3c6du));
     return h >> 28;
   }
   /// Perlin's blend of the gradients of the four corners of lattice cell (cx, cy) at offset
@@ -99,17 +109,18 @@ private:
   /// dotted with (dx, dy);
   /// `wrap` keeps 32 bits of a word (the identity on 32-bit words, a mask on 64-bit lanes).
   /// at() and atLanes() share it, so both perform the same operations.
-  template <class D, class W, class Dot, class Wrap>
-  [[gnu::always_inline]] D cellNoise(W cx, W cy, D x, D y, Dot&& dot, Wrap&& wrap) const noexcept {
+  template <class D, class W, class Dot, class Wrap, class Times = Multiply>
+  [[gnu::always_inline]] D cellNoise(W cx, W cy, D x, D y, Dot&& dot, Wrap&& wrap,
+                                     Times&& times = {}) const noexcept {
     // (c + 1)·P = c·P + P modulo 2^32: one multiplication per axis.
-    const W hx0 = wrap(cx * kPrimeX), hx1 = wrap(hx0 + kPrimeX);
-    const W rowHash = wrap(cy * kPrimeY);
+    const W hx0 = wrap(times(cx, kPrimeX)), hx1 = wrap(hx0 + kPrimeX);
+    const W rowHash = wrap(times(cy, kPrimeY));
     const W hy0 = rowHash ^ seed_, hy1 = wrap(rowHash + kPrimeY) ^ seed_;
     const D x1 = x - 1.0, y1 = y - 1.0;
-    const D n00 = dot(mix(hx0 ^ hy0, wrap), x, y);
-    const D n10 = dot(mix(hx1 ^ hy0, wrap), x1, y);
-    const D n01 = dot(mix(hx0 ^ hy1, wrap), x, y1);
-    const D n11 = dot(mix(hx1 ^ hy1, wrap), x1, y1);
+    const D n00 = dot(mix(hx0 ^ hy0, wrap, times), x, y);
+    const D n10 = dot(mix(hx1 ^ hy0, wrap, times), x1, y);
+    const D n01 = dot(mix(hx0 ^ hy1, wrap, times), x, y1);
+    const D n11 = dot(mix(hx1 ^ hy1, wrap, times), x1, y1);
     const D u = fade(x), v = fade(y);
     const D a = n00 + u * (n10 - n00);
     const D b = n01 + u * (n11 - n01);
