@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 
 #pragma GCC diagnostic ignored "-Wpsabi"
 
@@ -14,8 +15,17 @@ namespace {
 
 using base::kLanes;
 
-/// atLanes() at (xs, ys), W lanes at a time (kWideHash: the lattice hash in 64-bit lanes).
-template <int W, bool kWideHash = false>
+/// The hash's multiplication as the AVX-512 kernels do it (vpmuludq): the product of each
+/// lane's low 32 bits, here with other bits set above them, which atLanes() must not keep.
+struct LowWordTimes {
+  template <class V> [[gnu::always_inline]] V operator()(V h, std::uint32_t c) const noexcept {
+    return ((h & 0xffffffffu) * c) ^ (std::uint64_t{0x5a5a5a5a} << 32);
+  }
+};
+
+/// atLanes() at (xs, ys), W lanes at a time (kWideHash: the lattice hash in 64-bit lanes);
+/// with a Times other than LatticeNoise::Multiply, given the floors and multiplying by Times.
+template <int W, bool kWideHash = false, class Times = LatticeNoise::Multiply>
 std::array<double, kLanes> lanes(const LatticeNoise& n, const double* xs, const double* ys) {
   using D = typename base::Vectors<W>::Doubles;
   std::array<double, kLanes> out;
@@ -23,14 +33,25 @@ std::array<double, kLanes> lanes(const LatticeNoise& n, const double* xs, const 
     D x, y;
     std::memcpy(&x, xs + first, sizeof x);
     std::memcpy(&y, ys + first, sizeof y);
-    const D v = n.atLanes<W, kWideHash>(x, y);
+    D v;
+    if constexpr (std::is_same_v<Times, LatticeNoise::Multiply>) {
+      v = n.atLanes<W, kWideHash>(x, y);
+    } else {
+      D fx, fy; // the floors, as the kernels take them by a rounding instruction
+      for (int l = 0; l < W; ++l) {
+        fx[l] = std::floor(x[l]);
+        fy[l] = std::floor(y[l]);
+      }
+      v = n.atLanes<W, kWideHash>(x, y, fx, fy, Times{});
+    }
     std::memcpy(out.data() + first, &v, sizeof v);
   }
   return out;
 }
 
 /// Every lane of atLanes<W>() equals at() bit for bit, on random points at many scales.
-template <int W, bool kWideHash = false> void expectLanesEqualSinglePoints() {
+template <int W, bool kWideHash = false, class Times = LatticeNoise::Multiply>
+void expectLanesEqualSinglePoints() {
   const LatticeNoise n(42);
   base::Rng rng(3);
   for (int trial = 0; trial < 2000; ++trial) {
@@ -42,7 +63,7 @@ template <int W, bool kWideHash = false> void expectLanesEqualSinglePoints() {
     }
     if (trial % 7 == 0)
       xs[trial % kLanes] = std::floor(xs[trial % kLanes]); // on a lattice line
-    const std::array<double, kLanes> got = lanes<W, kWideHash>(n, xs, ys);
+    const std::array<double, kLanes> got = lanes<W, kWideHash, Times>(n, xs, ys);
     for (int l = 0; l < kLanes; ++l) {
       const double expected = n.at({xs[l], ys[l]});
       ASSERT_EQ(got[static_cast<std::size_t>(l)], expected)
@@ -54,8 +75,9 @@ template <int W, bool kWideHash = false> void expectLanesEqualSinglePoints() {
 TEST(LatticeNoise, LanesEqualSinglePointsBitForBit) {
   expectLanesEqualSinglePoints<8>();
   expectLanesEqualSinglePoints<8, true>(); // the AVX-512 kernels' hash in 64-bit lanes
-  expectLanesEqualSinglePoints<4>();       // the AVX2 kernels' width
-  expectLanesEqualSinglePoints<2>();       // the SSE2 kernels' width
+  expectLanesEqualSinglePoints<8, true, LowWordTimes>(); // ... and their multiplication
+  expectLanesEqualSinglePoints<4>();                     // the AVX2 kernels' width
+  expectLanesEqualSinglePoints<2>();                     // the SSE2 kernels' width
 }
 
 TEST(LatticeNoise, ZeroOnTheLatticeAndBoundedBetween) {

@@ -49,7 +49,9 @@ public:
   }
   /// Multiplication of the lattice hash's words by a 32-bit constant (h · c).
   struct Multiply {
-    template <class V> V operator()(V h, std::uint32_t c) const noexcept { return h * c; }
+    template <class V> [[gnu::always_inline]] V operator()(V h, std::uint32_t c) const noexcept {
+      return h * c;
+    }
   };
 
   /// The same given the floors fx, fy of px, py (a caller whose instruction set has a
@@ -99,7 +101,7 @@ private:
   /// gradient. `wrap` keeps 32 bits (the identity on 32-bit words): a product's low 32 bits
   /// depend only on its operands' low 32 bits, so wrapping after each operation suffices.
   template <class W, class Wrap, class Times>
-  static W mix(W h, Wrap&& wrap, Times&& times) noexcept {
+  [[gnu::always_inline]] static W mix(W h, Wrap&& wrap, Times&& times) noexcept {
     h ^= h >> 15;
     h = wrap(times(h, 0x2c1b3c6du));
     return h >> 28;
