@@ -29,7 +29,7 @@ double LatticeNoise::at(geometry::Vec2 p) const noexcept {
   return cellNoise(
       cx, cy, p.x - fx, p.y - fy,
       [&](std::uint32_t h, double dx, double dy) {
-        const double* g = detail::kGradients[h];
+        const double* g = detail::kGradients[h >> 28];
         return g[0] * dx + g[1] * dy;
       },
       word);

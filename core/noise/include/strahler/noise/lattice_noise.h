@@ -97,17 +97,17 @@ private:
   static constexpr std::uint32_t kPrimeX = 0x8da6b343u;
   static constexpr std::uint32_t kPrimeY = 0xd8163841u;
 
-  /// Final mix of a cell's hash (one xor-shift-multiply round); its top 4 bits pick the
-  /// gradient. `wrap` keeps 32 bits (the identity on 32-bit words): a product's low 32 bits
-  /// depend only on its operands' low 32 bits, so wrapping after each operation suffices.
+  /// Final mix of a cell's hash (one xor-shift-multiply round), 32 bits whose top 4
+  /// (h >> 28) pick the gradient. `wrap` keeps 32 bits (the identity on 32-bit words): a
+  /// product's low 32 bits depend only on its operands' low 32 bits, so wrapping after each
+  /// operation suffices.
   template <class W, class Wrap, class Times>
   [[gnu::always_inline]] static W mix(W h, Wrap&& wrap, Times&& times) noexcept {
     h ^= h >> 15;
-    h = wrap(times(h, 0x2c1b3c6du));
-    return h >> 28;
+    return wrap(times(h, 0x2c1b3c6du));
   }
   /// Perlin's blend of the gradients of the four corners of lattice cell (cx, cy) at offset
-  /// (x, y) inside it; dot(k, dx, dy) is gradient k (of 16, from each corner's mixed hash)
+  /// (x, y) inside it; dot(h, dx, dy) is gradient h >> 28 (of 16) of a corner's mixed hash h
   /// dotted with (dx, dy);
   /// `wrap` keeps 32 bits of a word (the identity on 32-bit words, a mask on 64-bit lanes).
   /// at() and atLanes() share it, so both perform the same operations.
@@ -131,8 +131,9 @@ private:
   template <class T> static T fade(T t) noexcept {
     return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
   }
-  /// Gradient h (0 to 15, in W lanes of 32 or 64 bits) dotted with (x, y): a lookup in the
-  /// table of 16 gradients held as vectors of W lanes, 2W entries per two-vector shuffle.
+  /// Gradient h >> 28 (0 to 15) of mixed hashes h (32 bits, in W lanes of 32 or 64 bits)
+  /// dotted with (x, y): a lookup in the table of 16 gradients held as vectors of W lanes, 2W
+  /// entries per two-vector shuffle.
   template <int W, class H>
   [[gnu::always_inline]] typename base::Vectors<W>::Doubles
   dotGradient(H h, typename base::Vectors<W>::Doubles x,
@@ -140,40 +141,40 @@ private:
     using Doubles = typename base::Vectors<W>::Doubles;
     using Int64s = typename base::Vectors<W>::Int64s;
     if constexpr (W == 4) {
-      // The 32-bit hashes zero-extended by one shuffle with zeros (GCC 12 compiles this to one
-      // vpmovzxdq, the conversion to four instructions, in halves); 64-bit hashes as they are.
-      Int64s index;
-      if constexpr (sizeof(h[0]) == 4)
-        index = reinterpret_cast<Int64s>(__builtin_shufflevector(h, H{}, 0, 4, 1, 4, 2, 4, 3, 4));
-      else
-        index = reinterpret_cast<Int64s>(h);
+      static_assert(sizeof(h[0]) == 4, "four lanes hash in 32-bit words");
       // Gradient k is gradient k & 3 of the first quadrant, (p, s), turned by k >> 2 quarter
       // turns: the dot product is p·u + s·v with (u, v) = (x, y) turned back, and equals
       // gx·x + gy·y bit for bit (the same products up to sign, added in either order). Two
-      // lookups in four-entry tables are cheaper here than one in sixteen.
-      // index is 0..15: shifts as unsigned (AVX2 has no 64-bit arithmetic shift; GCC built one
-      // of three instructions).
+      // lookups in four-entry tables are cheaper here than one in sixteen. k's bits (q1 q0 r1
+      // r0) are read where they lie: each hash is moved to the top of a 64-bit lane (widened by
+      // a shuffle with zeros: one instruction, then a shift), so q1 is the sign bit.
       using UInt64s = typename base::Vectors<W>::UInt64s;
-      const Int64s r = index & 3;
-      const auto q = reinterpret_cast<Int64s>(reinterpret_cast<UInt64s>(index) >> 2);
-      // Both lookups by one permutation of 32-bit words, its index built once: the halves of
-      // double r are words 2r and 2r + 1 (GCC would build such an index for each lookup).
       using Words8 = base::Vectors<8>::Words;
-      const Int64s twice = r + r;
-      const auto halves = reinterpret_cast<Words8>(twice | ((twice + 1) << 32));
+      constexpr std::uint64_t kSign = std::uint64_t{1} << 63;
+      const UInt64s top =
+          reinterpret_cast<UInt64s>(__builtin_shufflevector(h, H{}, 0, 4, 1, 4, 2, 4, 3, 4)) << 32;
+      const UInt64s q0 = top << 1; // q0 in the sign bit
+      // Negations as a flip of the sign bit: u by q1, v by q1 xor q0 (bit 1 of q + 1).
+      const auto signU = reinterpret_cast<Int64s>(top & kSign);
+      const auto signV = reinterpret_cast<Int64s>((top ^ q0) & kSign);
+      // Both lookups by one permutation of 32-bit words: double r's halves are words 2r and
+      // 2r + 1, and the permutation reads only an index's low 3 bits; (top >> 59)'s are
+      // r1 r0 and a bit of the hash below k, replaced by 0 in the low word, 1 in the high one.
+      const auto above = reinterpret_cast<Words8>(top >> 59);
+      const Words8 halves =
+          (__builtin_shufflevector(above, above, 0, 0, 2, 2, 4, 4, 6, 6) & 0xfffffffeu) |
+          Words8{0, 1, 0, 1, 0, 1, 0, 1};
       const auto p = reinterpret_cast<Doubles>(
           __builtin_shuffle(reinterpret_cast<Words8>(quadrantCos_), halves));
       const auto s = reinterpret_cast<Doubles>(
           __builtin_shuffle(reinterpret_cast<Words8>(quadrantSin_), halves));
-      const Int64s swap = (q & 1) == 1; // one comparison (`!= 0` took two)
-      // Negations as a flip of the sign bit, from bit 1 of q and of q + 1 moved to bit 63.
-      const Int64s signU = (q & 2) << 62, signV = ((q + 1) & 2) << 62;
+      const Int64s swap = reinterpret_cast<Int64s>(q0) < 0; // blends read the sign bit alone
       Doubles u = swap ? y : x, v = swap ? x : y;
       u = reinterpret_cast<Doubles>(reinterpret_cast<Int64s>(u) ^ signU);
       v = reinterpret_cast<Doubles>(reinterpret_cast<Int64s>(v) ^ signV);
       return p * u + s * v;
     } else {
-      const Int64s index = __builtin_convertvector(h, Int64s);
+      const Int64s index = __builtin_convertvector(h >> 28, Int64s);
       const Doubles* gx = gradients<W>(gradientX_);
       const Doubles* gy = gradients<W>(gradientY_);
       Doubles ax = __builtin_shuffle(gx[0], gx[1], index),
