@@ -5,6 +5,7 @@
 # the builds in turn spreads slow spells over both.
 # Per tile: a process evaluating 300 tiles minus the same process evaluating none
 # (BM_TileFixedCount), user cycles from perf.
+# Other instruction sets: STRAHLER_BENCH_SET=avx2 (or sse2) in the environment.
 # Usage: scripts/bench/tile-alternate.sh BENCH_A BENCH_B "ZOOMS" [ROUNDS]
 #   e.g. scripts/bench/tile-alternate.sh /tmp/before/strahler_tile_bench \
 #          build/release/tests/bench/strahler_tile_bench "9 13" 4

@@ -3,6 +3,7 @@
 # drifting speed: `perf stat` over a process evaluating 300 tiles minus the same process
 # evaluating none (world generation and start-up cancel out). Cycles and instructions count
 # only this process's user time; task-clock gives milliseconds.
+# Other instruction sets: STRAHLER_BENCH_SET=avx2 (or sse2) in the environment.
 # Usage: scripts/bench/tile-counters.sh [benchmark binary] [zooms...]
 #   e.g. scripts/bench/tile-counters.sh build/release/tests/bench/strahler_tile_bench 9 13
 # Needs perf (Debian: linux-perf) and kernel.perf_event_paranoid ≤ 2.

@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <numeric>
+#include <string>
 #include <vector>
 
 namespace strahler {
@@ -141,9 +143,20 @@ void BM_TileNeighbourhood(benchmark::State& state) {
 
 /// A fixed number of tiles (range(1)) at zoom range(0) in one iteration, for counting with
 /// perf: scripts/bench/tile-counters.sh subtracts the run with 0 tiles (world generation and
-/// start-up), which Google Benchmark's own timing cannot do for a whole process.
+/// start-up), which Google Benchmark's own timing cannot do for a whole process. The
+/// environment variable STRAHLER_BENCH_SET=avx2 or sse2 evaluates with that instruction set.
 void BM_TileFixedCount(benchmark::State& state) {
   const Fixture& f = fixture();
+  if (const char* set = std::getenv("STRAHLER_BENCH_SET")) {
+    const std::string name(set);
+    const bool known = name == "avx2" || name == "sse2";
+    if (!known || !construction::useInstructionSet(name == "avx2"
+                                                       ? construction::InstructionSet::kAvx2
+                                                       : construction::InstructionSet::kBaseline)) {
+      state.SkipWithError("STRAHLER_BENCH_SET: avx2 or sse2, and one this CPU has");
+      return;
+    }
+  }
   const tiling::SampleGrid grid = f.web.rasterGrid(tileAt(static_cast<int>(state.range(0))), 256);
   for (auto _ : state)
     for (std::int64_t i = 0; i < state.range(1); ++i)
