@@ -5,6 +5,7 @@
 #include "synthetic_terrain.h"
 #include "test_worlds.h"
 #include "tile_service.h"
+#include "web_tiles.h"
 
 #include "strahler/construction/world_builder.h"
 #include "strahler/encoding/mesh.h"
@@ -12,7 +13,6 @@
 
 #include <benchmark/benchmark.h>
 
-#include <cmath>
 #include <string>
 
 namespace strahler::encoding {
@@ -86,10 +86,8 @@ void BM_ServedDracoTile(benchmark::State& state) {
       construction::generateWorldData(strahler::testing::mallorcaSpec(), "bench").value());
   const int z = static_cast<int>(state.range(0));
   const geometry::Vec2 c = service.world().data().projectionCenter;
-  const double n = std::ldexp(1.0, z), lat = c.y * M_PI / 180.0;
   app::TileRequest request;
-  request.tile = {z, static_cast<std::int64_t>((c.x + 180.0) / 360.0 * n),
-                  static_cast<std::int64_t>((1.0 - std::asinh(std::tan(lat)) / M_PI) / 2.0 * n)};
+  request.tile = strahler::testing::webTileAt(c.x, c.y, z);
   request.format = app::TileFormat::kDraco;
   std::size_t bytes = 0;
   for (auto _ : state) {

@@ -2,6 +2,7 @@
 // zoom 0, a middle zoom and the finest zoom, and the same tiles evaluated without the block
 // restriction, in one run. Run: build/release/tests/bench/strahler_tile_bench
 #include "test_worlds.h"
+#include "web_tiles.h"
 
 #include "strahler/construction/world_builder.h"
 #include "strahler/tiling/tile_evaluator.h"
@@ -37,9 +38,7 @@ const Fixture& fixture() {
 /// A web tile over land at zoom z (Mallorca's centre).
 tiling::TileId tileAt(int z) {
   const geometry::Vec2 c = fixture().world.data().projectionCenter;
-  const double n = std::ldexp(1.0, z), lat = c.y * M_PI / 180.0;
-  return {z, static_cast<std::int64_t>((c.x + 180.0) / 360.0 * n),
-          static_cast<std::int64_t>((1.0 - std::asinh(std::tan(lat)) / M_PI) / 2.0 * n)};
+  return testing::webTileAt(c.x, c.y, z);
 }
 
 void BM_TileRestricted(benchmark::State& state) {

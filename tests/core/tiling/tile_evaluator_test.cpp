@@ -1,4 +1,5 @@
 #include "test_worlds.h"
+#include "web_tiles.h"
 
 #include "strahler/base/random.h"
 #include "strahler/construction/world_builder.h"
@@ -14,6 +15,7 @@ namespace strahler::tiling {
 namespace {
 
 using geometry::Vec2;
+using testing::webTileAt;
 
 const construction::World& islandWorld() {
   static const construction::World world(
@@ -27,14 +29,6 @@ TileScheme localScheme() {
 TileScheme webScheme() {
   const Vec2 c = islandWorld().data().projectionCenter;
   return TileScheme::webMercator(geometry::LocalProjection(c.x, c.y));
-}
-
-/// The web tile at zoom z that holds (lon, lat).
-TileId webTileAt(double lon, double lat, int z) {
-  const double n = std::ldexp(1.0, z);
-  const double latRad = lat * M_PI / 180.0;
-  return {z, static_cast<std::int64_t>((lon + 180.0) / 360.0 * n),
-          static_cast<std::int64_t>((1.0 - std::asinh(std::tan(latRad)) / M_PI) / 2.0 * n)};
 }
 
 TEST(TileEvaluator, RestrictedEvaluationEqualsTheWholeWorld) {
