@@ -1,5 +1,6 @@
 #include "strahler/analysis/hydrology.h"
 
+#include "strahler/analysis/river_profiles.h"
 #include "strahler/network/network_growth.h"
 
 namespace strahler::analysis {
@@ -22,6 +23,7 @@ base::Result<Hydrology> buildHydrology(const input::WorldSpec& spec,
   if (progress)
     progress("blocks", 1.0);
   stage("analysis");
+  shapeRiverProfiles(spec, *h.land, h.blocks, h.network);
   h.analysis = analyzeNetwork(spec, *h.land, h.network, h.blocks);
   if (progress)
     progress("analysis", 1.0);

@@ -1,5 +1,6 @@
 #include "strahler/analysis/network_analysis.h"
 
+#include "strahler/analysis/river_profiles.h"
 #include "strahler/network/relief_law.h"
 
 #include <algorithm>
@@ -8,19 +9,10 @@
 namespace strahler::analysis {
 namespace {
 
-constexpr double kSquareMetresPerKm2 = 1e6;
-
 void accumulateDrainage(const network::RiverNetwork& network, const blocks::BlockSet& blocks,
                         NetworkAnalysis& out) {
   const std::size_t n = network.nodes.size();
-  out.drainageAreaKm2.assign(n, 0.0);
-  // Children come after their parent: a reverse sweep adds each subtree before its root.
-  for (std::size_t i = n; i-- > 0;) {
-    out.drainageAreaKm2[i] += blocks.blocks[i].area / kSquareMetresPerKm2;
-    const network::NodeId parent = network.nodes[i].parent;
-    if (parent.valid())
-      out.drainageAreaKm2[parent.index()] += out.drainageAreaKm2[i];
-  }
+  out.drainageAreaKm2 = drainageAreasKm2(network, blocks);
   out.flow.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     out.flow[i] = flowFromArea(out.drainageAreaKm2[i]);

@@ -28,7 +28,7 @@ struct Field {
 };
 
 // The JSON keys in canonical order; seed and constraints follow.
-constexpr std::array<Field, 24> kFields{{
+constexpr std::array<Field, 26> kFields{{
     {"edgeLength", &Params::edgeLength},
     {"sigma", &Params::sigma},
     {"delta", &Params::delta},
@@ -49,6 +49,8 @@ constexpr std::array<Field, 24> kFields{{
     {"accessibilityRadius", &Params::accessibilityRadius},
     {"lambda", &Params::lambda},
     {"lambdaCoastFactor", &Params::lambdaCoastFactor},
+    {"concavity", &Params::concavity},
+    {"referenceArea", &Params::referenceArea},
     {"straightMinSlope", &Params::straightMinSlope},
     {"braidedMinFlow", &Params::braidedMinFlow},
     {"braidedMaxDistance", &Params::braidedMaxDistance},
@@ -347,6 +349,8 @@ base::Status validateParams(const Params& p) {
       {"accessibilityRadius", p.accessibilityRadius, 0.0, kInf, false, false, "m"},
       {"lambda", p.lambda, 0.0, 1.0, true, true, ""},
       {"lambdaCoastFactor", p.lambdaCoastFactor, 0.0, 1.0, false, true, ""},
+      {"concavity", p.concavity, 0.0, 1.0, true, true, ""},
+      {"referenceArea", p.referenceArea, 0.0, 10000.0, false, true, "km²"},
       {"straightMinSlope", p.straightMinSlope, 0.0, kInf, true, false, ""},
       {"braidedMinFlow", p.braidedMinFlow, 0.0, kInf, true, false, "m³/s"},
       {"braidedMaxDistance", p.braidedMaxDistance, 0.0, kInf, true, false, "m"},

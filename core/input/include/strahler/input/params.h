@@ -76,6 +76,13 @@ struct Params {
   double lambda = 0.2;             ///< λ: ridge rise per metre from the river nodes, [0, 1].
   double lambdaCoastFactor = 0.25; ///< λ multiplier at the coast (gentle beaches), (0, 1].
 
+  // --- River long profiles ---
+  // After growth, every edge's slope follows the stream-power steady state
+  // S = s(p) · (A / referenceArea)^−concavity, A the drainage area at its upstream node
+  // (km²) and s(p) the elevation law's slope above: steep headwaters, gentle lowlands.
+  double concavity = 0.45;     ///< θ of the slope–area law, in [0, 1]; 0 keeps s(p) everywhere.
+  double referenceArea = 10.0; ///< km² at which an edge's slope is s(p); in (0, 10000].
+
   // --- Rosgen typing (Section 5.2) ---
   double straightMinSlope = 0.02;     ///< Sections at least this steep are B (straight), else E.
   double braidedMinFlow = 4.0;        ///< m³/s; D (braided) needs this flow ...
