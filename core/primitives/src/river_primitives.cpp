@@ -218,15 +218,15 @@ double channelDepth(double flow) noexcept {
 double valleyRadius(RiverType type, double width) noexcept {
   switch (type) {
   case RiverType::kStraight:
-    return std::max(5.0 * width, 60.0);
+    return 120.0 + 20.0 * width;
   case RiverType::kSinuous:
-    return std::max(8.0 * width, 120.0);
+    return 180.0 + 30.0 * width;
   case RiverType::kBraided:
-    return std::max(10.0 * width, 150.0);
+    return 250.0 + 30.0 * width;
   case RiverType::kDelta:
-    return std::max(12.0 * width, 200.0);
+    return 300.0 + 30.0 * width;
   }
-  return 120.0;
+  return 180.0;
 }
 
 std::vector<RiverPrimitive> generateRiverPrimitives(const input::Params& params,

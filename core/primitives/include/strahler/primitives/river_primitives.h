@@ -17,7 +17,9 @@ RiverType toRiverType(analysis::RosgenType type) noexcept;
 double channelWidth(double flow) noexcept;
 /// Channel depth below the water surface for flow φ, m (see channelWidth).
 double channelDepth(double flow) noexcept;
-/// Half-width r of the valley a river of this type and width replaces, m.
+/// Half-width r of the valley a river of this type and channel width replaces, m: it grows
+/// with the channel, so with the drainage area (a first-order stream's hollow is ~170 m wide
+/// each side, a 25 m lowland river's valley ~1 km), wider for gentler types.
 double valleyRadius(RiverType type, double width) noexcept;
 
 /// Whether rivers of this type have the flatter bed of riverProfile(): braided rivers, deltas.
@@ -27,7 +29,7 @@ inline bool hasFlatBed(RiverType type) noexcept {
 /// The slope of the banks of riverProfile() for this type (steep V for B, gentle for E,
 /// nearly flat for D).
 inline double bankSlope(RiverType type) noexcept {
-  constexpr double kBankSlope[] = {0.3, 0.08, 0.04, 0.02}; // by RiverType
+  constexpr double kBankSlope[] = {0.25, 0.06, 0.04, 0.02}; // by RiverType
   return kBankSlope[static_cast<int>(type)];
 }
 
