@@ -28,6 +28,10 @@ struct TerrainSums {
   alignas(64) double amplitude[kTerrainLanes];
   alignas(64) double roughness[kTerrainLanes];
   alignas(64) double count[kTerrainLanes];
+  alignas(64) double slopeX[kTerrainLanes];       ///< Σ g_i dx_i (∇w_i = −4 g_i d_i)
+  alignas(64) double slopeY[kTerrainLanes];       ///< Σ g_i dy_i
+  alignas(64) double slopeHeightX[kTerrainLanes]; ///< Σ g_i dx_i c_i
+  alignas(64) double slopeHeightY[kTerrainLanes]; ///< Σ g_i dy_i c_i
 };
 
 /// One call of the terrain blend: `groups` groups (1 or 2) of base::kLanes points, group g at
@@ -38,6 +42,7 @@ struct TerrainLaneArgs {
   std::span<const std::uint32_t> ids;
   std::array<const OctaveFades*, 2> fades{}; ///< of each group's spacing
   const noise::LatticeNoise* noise = nullptr;
+  std::uint32_t gullySeed = 0; ///< shuffles the gully octaves' phases
   std::array<const geometry::Vec2*, 2> points{};
   std::size_t groups = 1;
   double* h = nullptr;

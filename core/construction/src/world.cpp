@@ -3,6 +3,7 @@
 #include "evaluation_lanes.h"
 
 #include "strahler/base/lanes.h"
+#include "strahler/base/random.h"
 #include "strahler/geometry/distance.h"
 #include "strahler/primitives/river_primitives.h"
 
@@ -18,6 +19,7 @@ using geometry::Vec2;
 
 constexpr double kGridCell = 500.0; // m
 constexpr std::uint64_t kNoiseStream = 0x746572726e6full;
+constexpr std::uint64_t kGullyStream = 0x67756c6c79ull;
 constexpr double kShelfReach = CoastShape::kShelfReach;
 
 /// A radius with a margin far above the rounding of distances between coordinates: points
@@ -72,7 +74,8 @@ double octaveFade(double wavelength, double spacing) noexcept {
 
 World::World(WorldData data)
     : data_(std::move(data)), land_(data_.land), terrainGrid_(worldBounds(data_), kGridCell),
-      riverGrid_(worldBounds(data_), kGridCell), noise_(data_.params.seed ^ kNoiseStream) {
+      riverGrid_(worldBounds(data_), kGridCell), noise_(data_.params.seed ^ kNoiseStream),
+      gullySeed_(static_cast<std::uint32_t>(base::mixHash(data_.params.seed, kGullyStream))) {
   hot_.reserve(data_.terrain.size());
   for (std::uint32_t i = 0; i < data_.terrain.size(); ++i) {
     const primitives::TerrainPrimitive& t = data_.terrain[i];
@@ -144,9 +147,16 @@ void World::terrainLanes(std::size_t lanes, const Vec2* first, const Vec2* secon
   const detail::OctaveFades& firstFades = fadesAt(spacing[0]);
   const detail::OctaveFades& secondFades = second ? fadesAt(spacing[1]) : firstFades;
   detail::TerrainSums sums;
-  const detail::TerrainLaneArgs args{
-      hot_.data(), ids,  {&firstFades, &secondFades}, &noise_, {first, second}, second ? 2u : 1u, h,
-      w,           &sums};
+  const detail::TerrainLaneArgs args{hot_.data(),
+                                     ids,
+                                     {&firstFades, &secondFades},
+                                     &noise_,
+                                     gullySeed_,
+                                     {first, second},
+                                     second ? 2u : 1u,
+                                     h,
+                                     w,
+                                     &sums};
   if (lanes == 1)
     detail::terrainPoint(args);
   else

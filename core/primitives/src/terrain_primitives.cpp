@@ -16,7 +16,7 @@ using geometry::Vec2;
 
 constexpr std::uint64_t kTerrainStream = 0x7465727261696eull;
 constexpr double kMinSpacingFraction = 0.6;
-constexpr double kAmplitudePerMetreOfRelief = 0.12;
+constexpr double kAmplitudePerMetreOfRelief = 0.3;
 
 /// The jittered candidate of grid cell (i, j) and its random priority.
 struct Candidate {
@@ -187,13 +187,13 @@ private:
         sum > 0 ? (a.distance * b.elevation + b.distance * a.elevation) / sum : a.elevation;
     const double relief = std::max(0.0, b.elevation - a.elevation);
     const double amplitude =
-        kAmplitudePerMetreOfRelief * relief * smoothstep(a.distance / (2.0 * kTerrainSpacing));
+        kAmplitudePerMetreOfRelief * relief * smoothstep(a.distance / (0.6 * kTerrainSpacing));
     TerrainPrimitive t;
     t.center = quantize(c);
     t.radius = quantize(kTerrainRadiusInSpacings * kTerrainSpacing, Quantum::kRadius);
     t.elevation = quantize(cz, Quantum::kElevation);
     t.amplitude = quantize(amplitude, Quantum::kElevation);
-    t.roughness = quantize(0.42 + 0.16 * relief_.mountainousness(c), Quantum::kRoughness);
+    t.roughness = quantize(0.4 + 0.1 * relief_.mountainousness(c), Quantum::kRoughness);
     return t;
   }
 

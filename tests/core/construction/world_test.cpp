@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -32,14 +33,44 @@ const World& defaultWorld() {
   return *world;
 }
 
-/// B(T…) at p written out plainly from its definition (world.h), every primitive visited:
-/// the reference for the vectorised evaluator.
+/// One gully octave at lattice point q with stripes across the unit vector n, written out
+/// plainly (evaluation_kernels.inc, gullyOctave): its value and its derivative along n.
+std::pair<double, double> referenceGully(std::uint32_t seed, Vec2 q, Vec2 n) {
+  const double x0 = std::floor(q.x), y0 = std::floor(q.y);
+  const double fx = q.x - x0, fy = q.y - y0;
+  const auto fade = [](double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); };
+  const double u = fade(fx), v = fade(fy);
+  double value = 0.0, slope = 0.0;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      const auto cx = static_cast<std::uint32_t>(static_cast<std::int32_t>(x0) + i);
+      const auto cy = static_cast<std::uint32_t>(static_cast<std::int32_t>(y0) + j);
+      std::uint32_t h = (cx * 0x8da6b343u) ^ (cy * 0xd8163841u) ^ seed;
+      h ^= h >> 15;
+      h *= 0x2c1b3c6du;
+      h ^= h >> 13;
+      const double phase =
+          2.0 * ((fx - i) * n.x + (fy - j) * n.y) + static_cast<double>(h >> 8) / 16777216.0;
+      const double s = phase - std::nearbyint(phase);
+      const double weight = (i ? u : 1.0 - u) * (j ? v : 1.0 - v);
+      value += weight * (2.0 / 3.0 - 8.0 * s * s);
+      slope += weight * -16.0 * s;
+    }
+  return {value, slope};
+}
+
+/// B(T…) at p written out plainly from its definition (world.h, evaluation_kernels.inc),
+/// every primitive visited: the reference for the vectorised evaluator.
 Sample referenceTerrain(const World& world, Vec2 p, double spacing) {
   const noise::LatticeNoise noise(world.data().params.seed ^ 0x746572726e6full);
+  const auto gullySeed =
+      static_cast<std::uint32_t>(base::mixHash(world.data().params.seed, 0x67756c6c79ull));
   double weight = 0.0, weightedHeight = 0.0, amplitude = 0.0, roughness = 0.0;
+  Vec2 weightGradient, heightGradient; // Σ ∇w_i, Σ ∇w_i c_i
   int count = 0;
   for (const primitives::TerrainPrimitive& t : world.data().terrain) {
-    const double w = primitives::falloff(lengthSquared(p - t.center), t.radius * t.radius);
+    const double r2 = t.radius * t.radius;
+    const double w = primitives::falloff(lengthSquared(p - t.center), r2);
     if (w <= 0.0)
       continue;
     ++count;
@@ -47,21 +78,36 @@ Sample referenceTerrain(const World& world, Vec2 p, double spacing) {
     weightedHeight += w * t.elevation;
     amplitude += w * t.amplitude;
     roughness += w * std::min(t.roughness, World::kMaxRoughness);
+    const Vec2 gradient = (p - t.center) * (-4.0 * (1.0 - lengthSquared(p - t.center) / r2) / r2);
+    weightGradient = weightGradient + gradient;
+    heightGradient = heightGradient + gradient * t.elevation;
   }
   if (count == 0)
     return {};
-  const double a = amplitude / weight, g = roughness / weight;
-  double sum = 0.0;
-  for (int k = 0; k < NoiseOctaves::kOctaves; ++k) {
+  const double base = weightedHeight / weight;
+  Vec2 slope = (heightGradient - weightGradient * base) * (1.0 / weight);
+  const double g = roughness / weight;
+  double octave = amplitude / weight, sum = 0.0, flanks = 1.0;
+  for (int k = 1; k < NoiseOctaves::kOctaves; ++k) {
     const double wavelength = NoiseOctaves::kLongest / std::ldexp(1.0, k);
-    const double octave =
-        a * (1.0 - g) / (1.0 - std::pow(g, NoiseOctaves::kOctaves)) * std::pow(g, k);
-    if (octave < 1e-3)
+    const double fade = octaveFade(wavelength, spacing);
+    octave *= g;
+    if (fade <= 0.0 || octave < 1e-3)
       break;
-    sum += octaveFade(wavelength, spacing) * octave *
-           noise.at({p.x / wavelength + 37.1 * k, p.y / wavelength - 11.7 * k});
+    const Vec2 q{p.x / wavelength + 37.1 * k, p.y / wavelength - 11.7 * k};
+    if (k < 2 || k > 6) { // gradient noise
+      sum += fade * octave * noise.at(q);
+      continue;
+    }
+    const double steepness = length(slope);
+    const Vec2 across = steepness > 1e-12 ? perpendicular(slope) * (1.0 / steepness) : Vec2{};
+    const auto [value, rise] = referenceGully(gullySeed, q, across);
+    const double depth = std::min(fade * octave, 0.035 * steepness * wavelength) * flanks;
+    sum += depth * value;
+    flanks *= std::clamp((value + 4.0 / 3.0) * 2.0, 0.0, 1.0);
+    slope = slope + across * (depth * rise * 2.0 / wavelength);
   }
-  return {weightedHeight / weight + sum, weight / count};
+  return {base + sum, weight / count};
 }
 
 /// U(R…) at p from its definition, every segment of every river visited.

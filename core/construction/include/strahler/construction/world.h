@@ -219,6 +219,7 @@ private:
   std::vector<HotTerrain> hot_; // per terrain primitive
   double terrainReach_ = 0.0;
   noise::LatticeNoise noise_;
+  std::uint32_t gullySeed_ = 0; // shuffles the gully octaves' phases
 };
 
 /// Vector instruction sets the evaluator can run on; every one gives the same bits.
