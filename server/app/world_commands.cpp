@@ -8,10 +8,16 @@
 #include "strahler/construction/world.h"
 #include "strahler/image/image.h"
 #include "strahler/quality/analysis_report.h"
+#include "strahler/quality/dem_file.h"
+#include "strahler/quality/flow_field.h"
+#include "strahler/quality/relief.h"
+#include "strahler/quality/river_agreement.h"
 #include "strahler/quality/world_raster.h"
 #include "strahler/render/relief_image.h"
 #include "strahler/store/world_file.h"
 
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -29,10 +35,16 @@ constexpr const char* kRenderUsage =
     "default 1600, along the longer side).\n";
 constexpr const char* kAnalyzeUsage =
     "usage: strahler analyze WORLD.world [--cell-size M]\n"
+    "       strahler analyze --dem FILE [--cell-size M]\n"
     "Checks that the terrain respects its water and prints JSON: the share of land cells\n"
     "(M metres, 5..30, default 30) that drain to the sea or a lake after filling depressions\n"
-    "shallower than 1 m, rises along river centrelines (tolerance 0.5 m), and Horton's\n"
-    "bifurcation and length ratios.\n";
+    "shallower than 1 m (with rivers burnt in, and without), rises along river centrelines\n"
+    "(tolerance 0.5 m), Horton's bifurcation and length ratios, and the relief figures of the\n"
+    "terrain (slope-area concavity, slope percentiles, D8 confluences, drainage density,\n"
+    "dissection, agreement of D8 channels with the rivers, sinuosity by Rosgen type).\n"
+    "--dem: the relief figures of a real DEM instead: an ESRI ASCII grid (.asc; --cell-size\n"
+    "replaces its cellsize, e.g. for a grid in degrees) or any raster OpenImageIO reads\n"
+    "(heights in metres; --cell-size M, metres > 0, required). NODATA cells count as outside.\n";
 
 constexpr const char* kTileUsage =
     "usage: strahler tile WORLD.world --scheme web|local --z Z --x X --y Y\n"
@@ -145,7 +157,63 @@ int runTile(const std::vector<std::string>& raw) {
   return 0;
 }
 
+namespace {
+
+/// The relief figures of `raster`, and those against the world's rivers when there is a world.
+quality::ReliefReport reliefReport(const quality::HeightRaster& raster,
+                                   const construction::World* world) {
+  quality::ReliefReport report;
+  report.width = raster.width;
+  report.height = raster.height;
+  report.cellSize = raster.cellSize;
+  const quality::FlowField flow = quality::computeFlowField(raster);
+  report.terrain = quality::measureRelief(raster, flow);
+  if (world != nullptr) {
+    report.network = quality::compareWithRivers(*world, raster, flow);
+    report.drainingFractionUnburnt = quality::checkDrainage(raster, 1.0).drainingFraction;
+  }
+  return report;
+}
+
+/// `--cell-size` of --dem mode: a positive number of metres, at most 100 km.
+base::Result<std::optional<double>> demCellSize(const CliArgs& args) {
+  const std::optional<std::string> text = args.get("--cell-size");
+  if (!text)
+    return std::optional<double>();
+  double value = 0;
+  const char* end = text->data() + text->size();
+  const auto [ptr, ec] = std::from_chars(text->data(), end, value);
+  if (ec != std::errc() || ptr != end || !std::isfinite(value) || value <= 0 || value > 1e5)
+    return base::makeError(base::ErrorCode::kOutOfRange,
+                           "--cell-size must be a number of metres in (0, 100000], not '" + *text +
+                               "'");
+  return std::optional<double>(value);
+}
+
+int analyzeDem(const CliArgs& args) {
+  if (!args.positional().empty())
+    return usageError({base::ErrorCode::kInvalidInput, "--dem takes no WORLD file"}, kAnalyzeUsage);
+  auto cellSize = demCellSize(args);
+  if (!cellSize)
+    return usageError(cellSize.error(), kAnalyzeUsage);
+  const std::string path = args.get("--dem").value_or("");
+  auto raster = quality::readDemFile(path, cellSize.value());
+  if (!raster)
+    return fail(raster.error());
+  std::puts(quality::demReportJson(path, reliefReport(raster.value(), nullptr)).c_str());
+  return 0;
+}
+
+} // namespace
+
 int runAnalyze(const std::vector<std::string>& raw) {
+  auto parsed = CliArgs::parse("analyze", raw, {"--cell-size", "--dem"}, {"--help", "-h"});
+  if (!parsed)
+    return usageError(parsed.error(), kAnalyzeUsage);
+  if (parsed.value().has("--help") || parsed.value().has("-h"))
+    return printUsage(kAnalyzeUsage);
+  if (parsed.value().get("--dem"))
+    return analyzeDem(parsed.value());
   auto opened = openWorld("analyze", raw, {"--cell-size"}, kAnalyzeUsage);
   if (auto* code = std::get_if<int>(&opened))
     return *code;
@@ -155,13 +223,16 @@ int runAnalyze(const std::vector<std::string>& raw) {
     return usageError(cell.error(), kAnalyzeUsage);
   const construction::World world(std::move(c.world));
   const double cellSize = static_cast<double>(cell.value().value_or(30));
-  const quality::DrainageReport drainage =
-      quality::checkDrainage(quality::rasterizeWorld(world, cellSize, threadCount()), 1.0);
+  quality::HeightRaster raster =
+      quality::rasterizeWorld(world, cellSize, threadCount(), quality::RiverBurning::kNone);
+  const quality::ReliefReport relief = reliefReport(raster, &world);
+  quality::burnRivers(world, raster);
+  const quality::DrainageReport drainage = quality::checkDrainage(raster, 1.0);
   const quality::RiverProfileReport rivers = quality::checkRiversDescend(
       quality::riverCentrelines(world), [&](geometry::Vec2 p) { return world.height(p, 1.0); }, 5.0,
       0.5);
   const quality::HortonStatistics horton = quality::hortonStatistics(world.data().network);
-  std::puts(quality::analysisReportJson(drainage, horton, rivers).c_str());
+  std::puts(quality::analysisReportJson(drainage, horton, rivers, relief).c_str());
   return 0;
 }
 

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -212,6 +213,97 @@ TEST(WorldCommands, InfoRenderAndAnalyzeAWorldFile) {
   const double rb = report["horton"]["bifurcationRatio"].get<double>();
   EXPECT_GT(rb, 3.0);
   EXPECT_LT(rb, 5.0);
+  EXPECT_TRUE(report["drainage"]["drainingFractionUnburnt"].is_number());
+  const auto& relief = report["relief"];
+  for (const char* key : {"raster", "slopeArea", "slopeDeg", "steeperThan45Fraction", "confluences",
+                          "confluences3PlusFraction", "drainageDensityKmPerKm2", "dissection",
+                          "channelsNearRiversFraction", "riversNearChannelsFraction",
+                          "networkConfluences3PlusFraction", "sinuosity"})
+    EXPECT_TRUE(relief.contains(key)) << key;
+  EXPECT_GT(relief["slopeDeg"]["p50"].get<double>(), 0.0);
+  EXPECT_GT(relief["drainageDensityKmPerKm2"]["1"].get<double>(), 0.0);
+  EXPECT_GE(relief["channelsNearRiversFraction"].get<double>(), 0.0);
+  EXPECT_LE(relief["riversNearChannelsFraction"].get<double>(), 1.0);
+  EXPECT_GE(relief["sinuosity"]["B"].get<double>(), 1.0);
+  EXPECT_EQ(relief["raster"]["cellSizeM"].get<double>(), 30.0);
+}
+
+TEST(WorldCommands, AnalyzeADemPrintsItsReliefFigures) {
+  // 60 x 50 cells of 50 m: a valley side tilted towards x = 0 with a NODATA corner.
+  std::ostringstream grid;
+  grid << "ncols 60\nnrows 50\nxllcorner 0\nyllcorner 0\ncellsize 50\nNODATA_value -9999\n";
+  for (int row = 0; row < 50; ++row) {
+    for (int col = 0; col < 60; ++col)
+      grid << (row < 3 && col < 3 ? -9999.0 : 100.0 + 5.0 * col + 2.0 * std::abs(row - 25)) << ' ';
+    grid << '\n';
+  }
+  const fs::path dem = writeScratch("valley.asc", grid.str());
+  const ProcessRun run = strahler("analyze --dem " + dem.string());
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto report = nlohmann::json::parse(run.out);
+  EXPECT_EQ(report["dem"], dem.string());
+  const auto& relief = report["relief"];
+  EXPECT_EQ(relief["raster"]["width"], 60);
+  EXPECT_EQ(relief["raster"]["landCells"], 60 * 50 - 9);
+  EXPECT_GT(relief["slopeDeg"]["p50"].get<double>(), 5.0);
+  EXPECT_TRUE(relief["channelsNearRiversFraction"].is_null());
+  EXPECT_TRUE(relief["sinuosity"]["E"].is_null());
+  EXPECT_FALSE(report.contains("drainage"));
+
+  const ProcessRun scaled = strahler("analyze --dem=" + dem.string() + " --cell-size 100");
+  ASSERT_EQ(scaled.exitCode, 0) << scaled.err;
+  EXPECT_EQ(nlohmann::json::parse(scaled.out)["relief"]["raster"]["cellSizeM"], 100.0);
+}
+
+TEST(WorldCommands, AnalyzeTheReferenceDem) {
+  const fs::path dem =
+      fs::path(STRAHLER_SOURCE_DIR) / ".." / "shared" / "reference" / "orkhon-valley-92m.asc";
+  if (!fs::exists(dem))
+    GTEST_SKIP() << dem << " is absent";
+  const ProcessRun run = strahler("analyze --dem " + dem.string());
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto relief = nlohmann::json::parse(run.out)["relief"];
+  EXPECT_NEAR(relief["slopeArea"]["theta"].get<double>(), 0.34, 0.03);
+  EXPECT_NEAR(relief["slopeDeg"]["p50"].get<double>(), 11.1, 0.5);
+  EXPECT_NEAR(relief["dissection"].get<double>(), 5.8, 0.4);
+}
+
+TEST(WorldCommands, AnalyzeRejectsBadDems) {
+  const fs::path truncated = writeScratch(
+      "short.asc", "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 10\n1 2 3\n4 5\n");
+  const ProcessRun shortRun = strahler("analyze --dem " + truncated.string());
+  EXPECT_EQ(shortRun.exitCode, 1);
+  EXPECT_NE(shortRun.err.find(truncated.string() + "' line 7: the file ends after 5 values"),
+            std::string::npos)
+      << shortRun.err;
+  EXPECT_TRUE(shortRun.out.empty());
+
+  const fs::path text = writeScratch("garbage.asc", "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\n"
+                                                    "cellsize 10\n1 2 3\n4 five 6\n");
+  const ProcessRun garbage = strahler("analyze --dem " + text.string());
+  EXPECT_EQ(garbage.exitCode, 1);
+  EXPECT_NE(garbage.err.find("line 7: value 5 ('five'"), std::string::npos) << garbage.err;
+
+  const fs::path huge = writeScratch("huge.asc", "ncols 100000\nnrows 100000\nxllcorner 0\n"
+                                                 "yllcorner 0\ncellsize 10\n1\n");
+  const ProcessRun big = strahler("analyze --dem " + huge.string());
+  EXPECT_EQ(big.exitCode, 1);
+  EXPECT_NE(big.err.find("more than the limit"), std::string::npos) << big.err;
+
+  const ProcessRun missing = strahler("analyze --dem /nonexistent/dem.asc");
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("/nonexistent/dem.asc"), std::string::npos) << missing.err;
+
+  const fs::path png = writeScratch("dem.png", "not really a png");
+  const ProcessRun noCell = strahler("analyze --dem " + png.string());
+  EXPECT_EQ(noCell.exitCode, 1);
+  EXPECT_NE(noCell.err.find("--cell-size"), std::string::npos) << noCell.err;
+  EXPECT_EQ(strahler("analyze --dem " + png.string() + " --cell-size 30").exitCode, 1);
+
+  EXPECT_EQ(strahler("analyze --dem " + truncated.string() + " some.world").exitCode, 2);
+  EXPECT_EQ(strahler("analyze --dem " + truncated.string() + " --cell-size abc").exitCode, 2);
+  EXPECT_EQ(strahler("analyze --dem " + truncated.string() + " --cell-size -5").exitCode, 2);
+  EXPECT_EQ(strahler("analyze --dem").exitCode, 2);
 }
 
 TEST(WorldCommands, RejectDamagedOrMissingWorldFiles) {

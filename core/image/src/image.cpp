@@ -117,6 +117,76 @@ base::Result<GrayImage> readGrayImageUnguarded(const std::string& path, std::siz
   return readOpenedImage(*input, "image " + quoted(path), maxPixels);
 }
 
+/// Converts `count` stored values of type T to float.
+template <class T>
+void storedToFloat(const std::vector<std::uint8_t>& bytes, std::size_t count,
+                   std::vector<float>& out) {
+  const T* values = reinterpret_cast<const T*>(bytes.data());
+  for (std::size_t i = 0; i < count; ++i)
+    out[i] = static_cast<float>(values[i]);
+}
+
+/// Reads the first channel of an opened image as its stored values (integers not normalised).
+base::Result<GrayImage> readStoredValues(OIIO::ImageInput& input, const std::string& label,
+                                         std::size_t maxPixels) {
+  const OIIO::ImageSpec spec = input.spec();
+  STRAHLER_RETURN_IF_ERROR(checkSpec(spec, label, maxPixels));
+  GrayImage image;
+  image.width = spec.width;
+  image.height = spec.height;
+  const std::size_t count =
+      static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
+  image.pixels.resize(count);
+  const OIIO::TypeDesc::BASETYPE base = OIIO::TypeDesc::BASETYPE(spec.format.basetype);
+  const bool integer = base == OIIO::TypeDesc::UINT8 || base == OIIO::TypeDesc::INT8 ||
+                       base == OIIO::TypeDesc::UINT16 || base == OIIO::TypeDesc::INT16 ||
+                       base == OIIO::TypeDesc::UINT32 || base == OIIO::TypeDesc::INT32;
+  const OIIO::TypeDesc readAs = integer ? OIIO::TypeDesc(base) : OIIO::TypeDesc::FLOAT;
+  std::vector<std::uint8_t> bytes(integer ? count * readAs.size() : 0);
+  void* target = integer ? static_cast<void*>(bytes.data()) : image.pixels.data();
+  if (!input.read_image(0, 0, 0, 1, readAs, target))
+    return makeError(
+        ErrorCode::kInvalidInput,
+        label + ": cannot read pixels: " +
+            cleanMessage(input.geterror() + OIIO::geterror(), "the file is truncated or corrupt"));
+  input.close();
+  switch (base) {
+  case OIIO::TypeDesc::UINT8:
+    storedToFloat<std::uint8_t>(bytes, count, image.pixels);
+    break;
+  case OIIO::TypeDesc::INT8:
+    storedToFloat<std::int8_t>(bytes, count, image.pixels);
+    break;
+  case OIIO::TypeDesc::UINT16:
+    storedToFloat<std::uint16_t>(bytes, count, image.pixels);
+    break;
+  case OIIO::TypeDesc::INT16:
+    storedToFloat<std::int16_t>(bytes, count, image.pixels);
+    break;
+  case OIIO::TypeDesc::UINT32:
+    storedToFloat<std::uint32_t>(bytes, count, image.pixels);
+    break;
+  case OIIO::TypeDesc::INT32:
+    storedToFloat<std::int32_t>(bytes, count, image.pixels);
+    break;
+  default:
+    break;
+  }
+  // Values are already as stored: finishPixels only checks finiteness for a float format.
+  STRAHLER_RETURN_IF_ERROR(finishPixels(image, OIIO::TypeDesc::FLOAT, label));
+  return image;
+}
+
+base::Result<GrayImage> readFloatRasterUnguarded(const std::string& path, std::size_t maxPixels) {
+  STRAHLER_RETURN_IF_ERROR(checkReadable(path));
+  auto input = OIIO::ImageInput::open(path);
+  if (!input)
+    return makeError(ErrorCode::kInvalidInput,
+                     "raster " + quoted(path) + ": cannot read: " +
+                         cleanMessage(OIIO::geterror(), "unknown image format"));
+  return readStoredValues(*input, "raster " + quoted(path), maxPixels);
+}
+
 base::Status writePngUnguarded(const std::string& path, const RgbImage& image) {
   if (image.width <= 0 || image.height <= 0)
     return makeError(ErrorCode::kInvalidInput, "png " + quoted(path) + ": empty image (" +
@@ -274,6 +344,18 @@ base::Result<GrayImage> readGrayImage(const std::string& path, std::size_t maxPi
     return makeError(ErrorCode::kInvalidInput, "image " + quoted(path) + ": " + e.what());
   } catch (...) {
     return makeError(ErrorCode::kInternal, "image " + quoted(path) + ": unknown failure");
+  }
+}
+
+base::Result<GrayImage> readFloatRaster(const std::string& path, std::size_t maxPixels) {
+  try {
+    return readFloatRasterUnguarded(path, maxPixels);
+  } catch (const std::bad_alloc&) {
+    return makeError(ErrorCode::kLimitExceeded, "raster " + quoted(path) + ": out of memory");
+  } catch (const std::exception& e) {
+    return makeError(ErrorCode::kInvalidInput, "raster " + quoted(path) + ": " + e.what());
+  } catch (...) {
+    return makeError(ErrorCode::kInternal, "raster " + quoted(path) + ": unknown failure");
   }
 }
 

@@ -15,11 +15,12 @@ Json number(double value) {
   return std::isfinite(value) ? Json(value) : Json(nullptr);
 }
 
-Json drainageJson(const DrainageReport& report) {
+Json drainageJson(const DrainageReport& report, double drainingFractionUnburnt) {
   Json json = Json::object();
   json["landCells"] = report.landCells;
   json["drainingCells"] = report.drainingCells;
   json["drainingFraction"] = number(report.drainingFraction);
+  json["drainingFractionUnburnt"] = number(drainingFractionUnburnt);
   json["pits"] = report.pits;
   json["largestUndrainedAreaKm2"] = number(report.largestUndrainedAreaKm2);
   json["fillToleranceM"] = number(report.fillTolerance);
@@ -51,14 +52,52 @@ Json riversJson(const RiverProfileReport& report) {
   return json;
 }
 
+Json reliefJson(const ReliefReport& relief) {
+  const ReliefFigures& t = relief.terrain;
+  const NetworkReliefFigures& n = relief.network;
+  Json json = Json::object();
+  json["raster"] = {{"width", relief.width},
+                    {"height", relief.height},
+                    {"cellSizeM", number(relief.cellSize)},
+                    {"landCells", t.landCells}};
+  json["slopeArea"] = {{"theta", number(t.slopeArea.theta)},
+                       {"r2", number(t.slopeArea.r2)},
+                       {"bins", t.slopeArea.bins}};
+  json["slopeDeg"] = {{"p50", number(t.slopes.p50Deg)},
+                      {"p90", number(t.slopes.p90Deg)},
+                      {"p99", number(t.slopes.p99Deg)}};
+  json["steeperThan45Fraction"] = number(t.slopes.steeperThan45);
+  json["confluences"] = t.confluences.confluences;
+  json["confluences3PlusFraction"] = number(t.confluences.shareThreeOrMore);
+  json["drainageDensityKmPerKm2"] = {{"0.1", number(t.drainageDensity01)},
+                                     {"1", number(t.drainageDensity1)}};
+  json["dissection"] = number(t.dissection);
+  json["channelsNearRiversFraction"] = number(n.channelsNearRivers);
+  json["riversNearChannelsFraction"] = number(n.riversNearChannels);
+  json["networkConfluences3PlusFraction"] = number(n.networkConfluences.shareThreeOrMore);
+  json["sinuosity"] = {{"B", number(n.sinuosityB)},
+                       {"E", number(n.sinuosityE)},
+                       {"D", number(n.sinuosityD)},
+                       {"D-delta", number(n.sinuosityDelta)}};
+  return json;
+}
+
 } // namespace
 
 std::string analysisReportJson(const DrainageReport& drainage, const HortonStatistics& horton,
-                               const RiverProfileReport& rivers) {
+                               const RiverProfileReport& rivers, const ReliefReport& relief) {
   Json json = Json::object();
-  json["drainage"] = drainageJson(drainage);
+  json["drainage"] = drainageJson(drainage, relief.drainingFractionUnburnt);
   json["horton"] = hortonJson(horton);
   json["rivers"] = riversJson(rivers);
+  json["relief"] = reliefJson(relief);
+  return json.dump(2);
+}
+
+std::string demReportJson(const std::string& path, const ReliefReport& relief) {
+  Json json = Json::object();
+  json["dem"] = path;
+  json["relief"] = reliefJson(relief);
   return json.dump(2);
 }
 

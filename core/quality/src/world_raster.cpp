@@ -36,6 +36,8 @@ void sampleRows(const construction::World& world, HeightRaster& r, int first, in
   }
 }
 
+} // namespace
+
 void burnRivers(const construction::World& world, HeightRaster& r) {
   const Vec2 corner = r.origin - Vec2{0.5 * r.cellSize, 0.5 * r.cellSize};
   for (const std::vector<Vec2>& line : riverCentrelines(world))
@@ -56,9 +58,8 @@ void burnRivers(const construction::World& world, HeightRaster& r) {
     }
 }
 
-} // namespace
-
-HeightRaster rasterizeWorld(const construction::World& world, double cellSize, int threads) {
+HeightRaster rasterizeWorld(const construction::World& world, double cellSize, int threads,
+                            RiverBurning burning) {
   const geometry::Aabb box = world.land().bounds().expanded(1000.0);
   HeightRaster r;
   r.cellSize = cellSize;
@@ -74,19 +75,26 @@ HeightRaster rasterizeWorld(const construction::World& world, double cellSize, i
   sampleRows(world, r, 0, n);
   for (std::thread& t : pool)
     t.join();
-  burnRivers(world, r);
+  if (burning == RiverBurning::kBurn)
+    burnRivers(world, r);
   return r;
+}
+
+std::vector<Vec2> riverCentreline(const construction::World& world,
+                                  const primitives::RiverPrimitive& river) {
+  std::vector<Vec2> line;
+  for (const primitives::CurvePoint& p : river.curve) {
+    line.push_back(p.position);
+    if (line.size() > 1 && !world.land().contains(p.position))
+      break; // reached the water
+  }
+  return line;
 }
 
 std::vector<std::vector<Vec2>> riverCentrelines(const construction::World& world) {
   std::vector<std::vector<Vec2>> lines;
   for (const primitives::RiverPrimitive& river : world.data().rivers) {
-    std::vector<Vec2> line;
-    for (const primitives::CurvePoint& p : river.curve) {
-      line.push_back(p.position);
-      if (line.size() > 1 && !world.land().contains(p.position))
-        break; // reached the water
-    }
+    std::vector<Vec2> line = riverCentreline(world, river);
     if (line.size() >= 2)
       lines.push_back(std::move(line));
   }

@@ -35,9 +35,33 @@ RiverProfileReport sampleRivers() {
   return {500, 1, 1.25, {12.5, -40.0}};
 }
 
+ReliefReport sampleRelief() {
+  ReliefReport relief;
+  relief.width = 98;
+  relief.height = 180;
+  relief.cellSize = 91.5;
+  relief.drainingFractionUnburnt = 0.75;
+  ReliefFigures& t = relief.terrain;
+  t.landCells = 17640;
+  t.slopeArea = {0.34, 0.98, 7};
+  t.slopes = {11.0, 17.0, 22.0, 0.0, 17000};
+  t.confluences = {40, 2, 0.05};
+  t.drainageDensity01 = 1.5;
+  t.drainageDensity1 = 0.5;
+  t.dissection = 5.75;
+  NetworkReliefFigures& n = relief.network;
+  n.channelsNearRivers = 0.25;
+  n.riversNearChannels = 0.5;
+  n.networkConfluences = {100, 30, 0.3};
+  n.sinuosityB = 1.0;
+  n.sinuosityE = 1.25;
+  n.sinuosityD = 1.125;
+  return relief; // no D-delta river: NaN
+}
+
 TEST(AnalysisReport, ParsesBackWithEveryDocumentedKey) {
-  const auto json =
-      nlohmann::json::parse(analysisReportJson(sampleDrainage(), sampleHorton(), sampleRivers()));
+  const auto json = nlohmann::json::parse(
+      analysisReportJson(sampleDrainage(), sampleHorton(), sampleRivers(), sampleRelief()));
   const auto& drainage = json.at("drainage");
   EXPECT_EQ(drainage.at("landCells"), 1000);
   EXPECT_EQ(drainage.at("drainingCells"), 995);
@@ -58,6 +82,43 @@ TEST(AnalysisReport, ParsesBackWithEveryDocumentedKey) {
   EXPECT_EQ(rivers.at("violations"), 1);
   EXPECT_DOUBLE_EQ(rivers.at("worstRiseM").get<double>(), 1.25);
   EXPECT_EQ(rivers.at("worstAt"), (nlohmann::json{12.5, -40.0}));
+  EXPECT_DOUBLE_EQ(drainage.at("drainingFractionUnburnt").get<double>(), 0.75);
+
+  const auto& relief = json.at("relief");
+  EXPECT_EQ(
+      relief.at("raster"),
+      (nlohmann::json{{"width", 98}, {"height", 180}, {"cellSizeM", 91.5}, {"landCells", 17640}}));
+  EXPECT_EQ(relief.at("slopeArea"), (nlohmann::json{{"theta", 0.34}, {"r2", 0.98}, {"bins", 7}}));
+  EXPECT_EQ(relief.at("slopeDeg"), (nlohmann::json{{"p50", 11.0}, {"p90", 17.0}, {"p99", 22.0}}));
+  EXPECT_DOUBLE_EQ(relief.at("steeperThan45Fraction").get<double>(), 0.0);
+  EXPECT_EQ(relief.at("confluences"), 40);
+  EXPECT_DOUBLE_EQ(relief.at("confluences3PlusFraction").get<double>(), 0.05);
+  EXPECT_EQ(relief.at("drainageDensityKmPerKm2"), (nlohmann::json{{"0.1", 1.5}, {"1", 0.5}}));
+  EXPECT_DOUBLE_EQ(relief.at("dissection").get<double>(), 5.75);
+  EXPECT_DOUBLE_EQ(relief.at("channelsNearRiversFraction").get<double>(), 0.25);
+  EXPECT_DOUBLE_EQ(relief.at("riversNearChannelsFraction").get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(relief.at("networkConfluences3PlusFraction").get<double>(), 0.3);
+  EXPECT_EQ(relief.at("sinuosity"),
+            (nlohmann::json{{"B", 1.0}, {"E", 1.25}, {"D", 1.125}, {"D-delta", nullptr}}));
+}
+
+TEST(AnalysisReport, ADemReportHasTheSameReliefKeysAllNullWithoutAWorld) {
+  ReliefReport report = sampleRelief();
+  report.network = NetworkReliefFigures{};
+  const auto json = nlohmann::json::parse(demReportJson("a.asc", report));
+  EXPECT_EQ(json.at("dem"), "a.asc");
+  const auto world = nlohmann::json::parse(
+      analysisReportJson(sampleDrainage(), sampleHorton(), sampleRivers(), sampleRelief()));
+  const auto& relief = json.at("relief");
+  for (const auto& item : world.at("relief").items())
+    EXPECT_TRUE(relief.contains(item.key())) << item.key();
+  EXPECT_EQ(relief.size(), world.at("relief").size());
+  for (const char* key : {"channelsNearRiversFraction", "riversNearChannelsFraction",
+                          "networkConfluences3PlusFraction"})
+    EXPECT_TRUE(relief.at(key).is_null()) << key;
+  for (const auto& item : relief.at("sinuosity").items())
+    EXPECT_TRUE(item.value().is_null()) << item.key();
+  EXPECT_DOUBLE_EQ(relief.at("dissection").get<double>(), 5.75);
 }
 
 TEST(AnalysisReport, NotANumberBecomesNull) {
@@ -66,8 +127,8 @@ TEST(AnalysisReport, NotANumberBecomesNull) {
   chain.meanStreamLength = {0.0, 300.0};
   chain.bifurcationRatio = kNaN;
   chain.lengthRatio = kNaN;
-  const auto json =
-      nlohmann::json::parse(analysisReportJson(sampleDrainage(), chain, sampleRivers()));
+  const auto json = nlohmann::json::parse(
+      analysisReportJson(sampleDrainage(), chain, sampleRivers(), sampleRelief()));
   EXPECT_TRUE(json.at("horton").at("bifurcationRatio").is_null());
   EXPECT_TRUE(json.at("horton").at("lengthRatio").is_null());
 }
@@ -76,11 +137,13 @@ TEST(AnalysisReport, OrdersAndSectionsKeepTheirOrder) {
   HortonStatistics stats;
   stats.streamCount.assign(12, 1);
   stats.meanStreamLength.assign(12, 1.0);
-  const std::string text = analysisReportJson(sampleDrainage(), stats, sampleRivers());
+  const std::string text =
+      analysisReportJson(sampleDrainage(), stats, sampleRivers(), sampleRelief());
   EXPECT_LT(text.find("\"drainage\""), text.find("\"horton\""));
   EXPECT_LT(text.find("\"horton\""), text.find("\"rivers\""));
+  EXPECT_LT(text.find("\"rivers\""), text.find("\"relief\""));
   EXPECT_LT(text.find("\"9\""), text.find("\"10\"")) << "numeric, not lexicographic, order";
-  EXPECT_EQ(text, analysisReportJson(sampleDrainage(), stats, sampleRivers()));
+  EXPECT_EQ(text, analysisReportJson(sampleDrainage(), stats, sampleRivers(), sampleRelief()));
 }
 
 } // namespace

@@ -34,6 +34,12 @@ struct RgbImage {
 /// volume images and unreadable files are errors naming the path (kNotFound when missing).
 base::Result<GrayImage> readGrayImage(const std::string& path, std::size_t maxPixels = 64u << 20);
 
+/// Reads the first channel of any image OpenImageIO can read as stored values (a 16-bit
+/// GeoTIFF of heights in metres gives metres: integer formats are NOT normalised), for
+/// elevation rasters. Same refusals as readGrayImage (size over `maxPixels` before the pixels
+/// are read, non-finite pixels, volume images, unreadable files, kNotFound when missing).
+base::Result<GrayImage> readFloatRaster(const std::string& path, std::size_t maxPixels = 64u << 20);
+
 /// Writes an RGB image as PNG (compression level 6); kInvalidInput when pixels.size() is not
 /// width*height*3, kIoError when the file cannot be written.
 base::Status writePng(const std::string& path, const RgbImage& image);

@@ -2,21 +2,46 @@
 
 #include "strahler/quality/drainage.h"
 #include "strahler/quality/horton.h"
+#include "strahler/quality/relief.h"
+#include "strahler/quality/river_agreement.h"
 #include "strahler/quality/river_profile.h"
 
+#include <limits>
 #include <string>
 
 namespace strahler::quality {
 
-/// The three checks as one JSON object, keys always present and in this order (NaN and
+/// The relief section of a report: figures of the terrain as it is (no rivers burnt in).
+struct ReliefReport {
+  int width = 0;                ///< Raster cells per row.
+  int height = 0;               ///< Raster rows.
+  double cellSize = 0.0;        ///< Raster cell side, metres.
+  ReliefFigures terrain;        ///< Figures of the heights alone.
+  NetworkReliefFigures network; ///< Figures against the world's rivers (NaN for a DEM).
+  /// checkDrainage's drainingFraction on the unburnt raster; NaN when not measured.
+  double drainingFractionUnburnt = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// The checks as one JSON object, keys always present and in this order (NaN and
 /// infinities become null; lengths and heights in metres, areas in km²):
-///   {"drainage": {"landCells", "drainingCells", "drainingFraction", "pits",
-///                 "largestUndrainedAreaKm2", "fillToleranceM"},
+///   {"drainage": {"landCells", "drainingCells", "drainingFraction", "drainingFractionUnburnt",
+///                 "pits", "largestUndrainedAreaKm2", "fillToleranceM"},
 ///    "horton": {"streamCount": {"1": N_1, "2": N_2, ...},
 ///               "meanStreamLengthM": {"1": L_1, ...}, "bifurcationRatio", "lengthRatio"},
-///    "rivers": {"samples", "violations", "worstRiseM", "worstAt": [x, y]}}
+///    "rivers": {"samples", "violations", "worstRiseM", "worstAt": [x, y]},
+///    "relief": see reliefJson below}
 /// Orders run from 1 to the highest order, in numeric order. Pretty-printed, 2-space indent.
 std::string analysisReportJson(const DrainageReport& drainage, const HortonStatistics& horton,
-                               const RiverProfileReport& rivers);
+                               const RiverProfileReport& rivers, const ReliefReport& relief);
+
+/// `{"dem": path, "relief": {...}}` for `strahler analyze --dem`, with the relief object:
+///   {"raster": {"width", "height", "cellSizeM", "landCells"},
+///    "slopeArea": {"theta", "r2", "bins"}, "slopeDeg": {"p50", "p90", "p99"},
+///    "steeperThan45Fraction", "confluences", "confluences3PlusFraction",
+///    "drainageDensityKmPerKm2": {"0.1": ≥ 0.1 km² channels, "1": ≥ 1 km² channels},
+///    "dissection", "channelsNearRiversFraction", "riversNearChannelsFraction",
+///    "networkConfluences3PlusFraction", "sinuosity": {"B", "E", "D", "D-delta"}}
+/// (definitions in relief.h and river_agreement.h; the last four are null without a world).
+std::string demReportJson(const std::string& path, const ReliefReport& relief);
 
 } // namespace strahler::quality
