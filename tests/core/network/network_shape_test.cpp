@@ -22,12 +22,12 @@ constexpr double kSampleSpacing = 500.0; // m: land sample grid
 
 struct ShapeFigures {
   std::size_t nodes = 0;
-  std::size_t confluences = 0; // nodes with ≥ 2 children
-  std::size_t stars = 0;       // nodes with ≥ 3 children
-  std::size_t samples = 0;     // land points of the 500 m grid
-  std::size_t farSamples = 0;  // ... farther than 1.5 km from every node
-  double maxGap = 0.0;         // m: largest distance from a land sample to its nearest node
-  double seconds = 0.0;        // growth time
+  std::size_t confluences = 0;   // nodes with ≥ 2 children
+  std::size_t stars = 0;         // nodes with ≥ 3 children
+  std::size_t samples = 0;       // land points of the 500 m grid
+  std::size_t farSamples = 0;    // ... farther than 1.5 km from every node
+  double maxGap = 0.0;           // m: largest distance from a land sample to its nearest node
+  double seconds = 0.0;          // growth time
   std::size_t branches = 0;      // inner confluences: the child farther from the stem's line
   std::size_t acuteBranches = 0; // ... 30° to 75° from it
   double branchAngleSum = 0.0;   // degrees
