@@ -41,8 +41,7 @@ base::Status writeOutputs(const CliArgs& args, const input::WorldSpec& spec,
     } else if (endsWith(*o, ".png")) {
       STRAHLER_RETURN_IF_ERROR(writeNetworkImage(*o, spec, world, imageSize));
     } else if (endsWith(*o, ".geojson") || endsWith(*o, ".json")) {
-      STRAHLER_RETURN_IF_ERROR(writeTextFile(
-          *o, render::riversGeoJson(world.network, world.flow, world.riverTypes, spec.projection)));
+      STRAHLER_RETURN_IF_ERROR(writeTextFile(*o, render::riversGeoJson(world, spec.projection)));
     } else {
       return base::makeError(base::ErrorCode::kInvalidInput,
                              "output '" + *o +

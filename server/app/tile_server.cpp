@@ -140,7 +140,7 @@ TileServer::TileServer(std::vector<std::pair<std::string, construction::WorldDat
     w->bounds[0] = box.min.x, w->bounds[1] = box.min.y, w->bounds[2] = box.max.x,
     w->bounds[3] = box.max.y;
     w->center = data.projectionCenter;
-    w->rivers = render::riversGeoJson(data.network, data.flow, data.riverTypes, projection);
+    w->rivers = render::riversGeoJson(data, projection);
     w->metadata = {{"id", id},
                    {"name", data.name},
                    {"bounds", {w->bounds[0], w->bounds[1], w->bounds[2], w->bounds[3]}},

@@ -115,6 +115,7 @@ TEST(GenerateCommand, WritesTheNetworkAsGeoJsonAndAPicture) {
     if (f["geometry"]["type"] == "LineString") {
       ++lines;
       EXPECT_GE(f["properties"]["strahler"].get<int>(), 1);
+      EXPECT_GT(f["properties"]["widthDownM"].get<double>(), 0.0);
       const double lon = f["geometry"]["coordinates"][0][0].get<double>();
       EXPECT_GT(lon, 2.2); // Mallorca spans about 2.3°E to 3.5°E
       EXPECT_LT(lon, 3.6);

@@ -39,16 +39,20 @@ export function elevationAt(map, lngLat) {
   return elevation === null || exaggeration === 0 ? null : elevation / exaggeration;
 }
 
-/** A DOM node for the popup: elevation, then the nearest river's order, flow and type. */
+/** A DOM node for the popup: elevation, then the nearest river's order, flow, type and width. */
 export function describePoint(map, point, lngLat) {
   const lines = [];
   const elevation = elevationAt(map, lngLat);
   lines.push(elevation === null ? 'Elevation: unknown (no terrain)' : `Elevation ≈ ${elevation.toFixed(0)} m`);
   const river = nearestRiver(map, point);
   if (river) {
-    const { strahler, flow, rosgen } = river.properties;
+    const { strahler, flow, rosgen, widthUpM, widthDownM } = river.properties;
     lines.push(`Nearest river: Strahler order ${strahler}`);
     lines.push(`Flow ${Number(flow).toFixed(flow < 10 ? 2 : 0)} m³/s · Rosgen type ${rosgen}`);
+    if (widthUpM !== undefined && widthDownM !== undefined) {
+      const [up, down] = [widthUpM, widthDownM].map((w) => Number(w).toFixed(0));
+      lines.push(`Channel ${up === down ? up : `${up}–${down}`} m wide`);
+    }
   } else {
     lines.push(`No river within ${SEARCH_RADIUS_PX} px`);
   }

@@ -95,7 +95,7 @@ describe('map viewer', () => {
     assert.match(await page.locator('#timings').innerText(), /evaluate \d/);
   });
 
-  test('click on a river: popup with elevation, Strahler order, flow and Rosgen type', async () => {
+  test('click on a river: popup with elevation, Strahler order, flow, Rosgen type and width', async () => {
     // The screen point of a vertex of a rendered river, away from the panel on the left.
     const point = await page.evaluate(() => {
       const map = window.strahlerMap;
@@ -114,6 +114,7 @@ describe('map viewer', () => {
     assert.match(text, /Elevation ≈ -?\d+ m/);
     assert.match(text, /Strahler order \d/);
     assert.match(text, /Flow [\d.]+ m³\/s · Rosgen type (B|E|D|D-delta)/);
+    assert.match(text, /Channel \d+(–\d+)? m wide/);
   });
 
   test('draws a terrain that is not blank (screenshot)', async () => {

@@ -339,7 +339,7 @@ base::Status validateParams(const Params& p) {
       {"probSymmetric", p.probSymmetric, 0.0, 1.0, true, true, ""},
       {"branchAngle", p.branchAngle, 0.0, 90.0, false, true, "degrees"},
       {"angleJitter", p.angleJitter, 0.0, 60.0, true, true, "degrees"},
-      {"fillBranches", double(p.fillBranches), 1.0, 5.0, true, true, ""},
+      {"fillBranches", double(p.fillBranches), 1.0, 2.0, true, true, ""},
       {"slopeMin", p.slopeMin, 0.0, kInf, true, false, ""},
       {"slopeMax", p.slopeMax, 0.0, kInf, true, false, ""},
       {"slopeJitter", p.slopeJitter, 0.0, 1.0, true, false, ""},

@@ -126,19 +126,23 @@ private:
 
   double jitter() { return rng_.uniform(-1.0, 1.0) * params_.angleJitter * kDegree; }
 
+  /// Rule 1 (fill): fillBranches children of priority 1. The first prolongs the river; a
+  /// second branches off like rule 2.2's side branch, so confluences stay binary. (The paper's
+  /// fan of p ∈ [1, 5] children over ±80° made confluences of 3 to 5 inflows, and a fan of 4
+  /// or 5 ended the river, as each child lay closer than σ to its siblings' edges.)
+  std::vector<ChildRequest> fillChildren() {
+    if (params_.fillBranches < 2)
+      return {{0.0, 1}};
+    const double branch = params_.branchAngle * kDegree;
+    const double side = rng_.chance(0.5) ? 1.0 : -1.0;
+    return {{-side * 0.15 * branch, 1}, {side * branch, 1}};
+  }
+
   /// The grammar of Figure 7: which children N_X asks for.
   std::vector<ChildRequest> applyRules(int n) {
     const double branch = params_.branchAngle * kDegree;
-    if (n <= 1 && highPriorityCount_ == 0) {
-      // Rule 1 (fill): 1..fillBranches children spread over ±80 degrees.
-      const auto count = 1 + rng_.below(static_cast<std::uint32_t>(params_.fillBranches));
-      std::vector<ChildRequest> children;
-      for (std::uint32_t i = 0; i < count; ++i) {
-        const double spread = count == 1 ? 0.0 : -80.0 + 160.0 * i / (count - 1);
-        children.push_back({spread * kDegree, 1});
-      }
-      return children;
-    }
+    if (n <= 1 && highPriorityCount_ == 0)
+      return fillChildren();
     const double u = rng_.uniform();
     if (u < params_.probContinue)
       return {{0.0, n}}; // rule 2.1

@@ -22,14 +22,14 @@ TEST(Params, EmptyObjectGivesTheDefaults) {
 }
 
 TEST(Params, ReadsEveryKindOfField) {
-  auto parsed = parseParams(R"({"edgeLength": 500, "sigma": 400.5, "fillBranches": 3,
+  auto parsed = parseParams(R"({"edgeLength": 500, "sigma": 400.5, "fillBranches": 1,
       "seed": 42, "constraints": [{"kind": "riverSlope", "image": "slope.png",
       "bounds": [2.5, 39, 3.5, 40]}]})");
   ASSERT_TRUE(parsed.ok()) << parsed.error().message;
   const Params& p = parsed.value();
   EXPECT_EQ(p.edgeLength, 500.0);
   EXPECT_EQ(p.sigma, 400.5);
-  EXPECT_EQ(p.fillBranches, 3);
+  EXPECT_EQ(p.fillBranches, 1);
   EXPECT_EQ(p.seed, 42u);
   ASSERT_EQ(p.constraints.size(), 1u);
   EXPECT_EQ(p.constraints[0].kind, ConstraintKind::kRiverSlope);
@@ -105,7 +105,8 @@ TEST(Params, EveryRangeIsEnforced) {
       {R"({"probSymmetric": 1.5})", ErrorCode::kOutOfRange, "'probSymmetric' = 1.5"},
       {R"({"branchAngle": 0})", ErrorCode::kOutOfRange, "'branchAngle' = 0 degrees"},
       {R"({"angleJitter": 61})", ErrorCode::kOutOfRange, "'angleJitter'"},
-      {R"({"fillBranches": 6})", ErrorCode::kOutOfRange, "'fillBranches' = 6 is outside [1, 5]"},
+      {R"({"fillBranches": 3})", ErrorCode::kOutOfRange, "'fillBranches' = 3 is outside [1, 2]"},
+      {R"({"fillBranches": 0})", ErrorCode::kOutOfRange, "'fillBranches' = 0 is outside [1, 2]"},
       {R"({"slopeMin": 0.1, "slopeMax": 0.05})", ErrorCode::kInvalidInput,
        "'slopeMin' = 0.1 must not exceed 'slopeMax' = 0.05"},
       {R"({"slopeMax": 0.7})", ErrorCode::kInvalidInput, "'slopeMax' = 0.7 must be less than"},
@@ -165,7 +166,7 @@ TEST(Params, SeedAsNumber) {
 TEST(Params, FillBranchesMustBeAnInteger) {
   EXPECT_TRUE(failsWith(parseParams(R"({"fillBranches": 2.5})"), ErrorCode::kInvalidInput,
                         "params: 'fillBranches' must be an integer, got 2.5"));
-  EXPECT_EQ(parseParams(R"({"fillBranches": 2.0})").value().fillBranches, 2);
+  EXPECT_EQ(parseParams(R"({"fillBranches": 1.0})").value().fillBranches, 1);
   EXPECT_TRUE(
       failsWith(parseParams(R"({"maxPriority": 1e12})"), ErrorCode::kOutOfRange, "'maxPriority'"));
 }
@@ -226,7 +227,7 @@ TEST(Params, CanonicalJsonRoundTripsExactly) {
   p.probContinue = 0.1;
   p.probAsymmetric = 0.2;
   p.probSymmetric = 0.7;
-  p.fillBranches = 2;
+  p.fillBranches = 1;
   p.maxPriority = 12;
   p.braidedMaxDistance = 1e21;
   p.seed = std::numeric_limits<std::uint64_t>::max();

@@ -12,6 +12,8 @@ namespace strahler::construction {
 /// Version of the generator; part of every cache key (and so of every tile's ETag), so
 /// changing what the generator makes, or how a world evaluates, invalidates cached worlds.
 /// 2: the terrain blend mixes noise amplitude and roughness (docs/architecture.md).
+/// 5: rule 1 (fill) gives at most two children (binary confluences); concave river
+/// profiles, valleys scaled to the catchment, gully relief octaves.
 inline constexpr const char* kGeneratorVersion = "strahler-generator-5";
 
 /// Runs the whole generation of Sections 4–7 on `spec`: network, blocks and analysis

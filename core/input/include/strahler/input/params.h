@@ -56,7 +56,10 @@ struct Params {
   double probSymmetric = 0.1;  ///< Ps: rule 2.3, symmetric Strahler branching; [0, 1].
   double branchAngle = 65.0;   ///< Degrees between a branch and its parent's direction; (0, 90].
   double angleJitter = 15.0;   ///< Degrees of random deviation of each new edge; [0, 60].
-  int fillBranches = 5;        ///< Rule 1: up to this many children when filling; [1, 5].
+  /// Rule 1 (fill): children a filling node asks for, 1 or 2 (default 2). 1 prolongs the
+  /// river; 2 also branches off at branchAngle, a binary confluence like rule 2.2's. The
+  /// paper's 1..5 children over ±80° made 3- to 5-inflow stars and ended rivers early.
+  int fillBranches = 2;
 
   // --- Elevation-increment (mountainousness) law ---
   // A new node is higher than its parent by Δz = e · s · (1 + jitter · u), u ∈ [-1, 1),

@@ -15,7 +15,8 @@ namespace strahler::network {
 /// - selection: among candidates within ζ metres of the lowest one, the highest priority
 ///   (ties: the lowest, then the oldest);
 /// - rules: 2.1 prolongation (Pc), 2.2 asymmetric branching (Pa), 2.3 symmetric branching
-///   (Ps); once every candidate has priority 1, rule 1 (fill) with 1..fillBranches children;
+///   (Ps); once every candidate has priority 1, rule 1 (fill): fillBranches (≤ 2) children, so
+///   no node has more than two children (binary confluences);
 /// - a child is kept only if it is in Ω, its edge stays more than δ from Γ, more than σ from
 ///   every non-adjacent edge, and its slope to nearby nodes is below κ (a few angles are
 ///   tried per child before it is rejected);
