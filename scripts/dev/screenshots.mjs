@@ -1,0 +1,87 @@
+// Close-up pictures of a world as its users see it: the map viewer pitched at zoom 13 and the
+// game demo near the ground, over one spot, in Debian's chromium against a real `strahler serve`.
+//   node scripts/dev/screenshots.mjs LON LAT OUT_PREFIX [strahler serve arguments...]
+// e.g. node scripts/dev/screenshots.mjs 2.93 39.70 /tmp/mallorca --coast tests/data/mallorca.geojson
+// writes OUT_PREFIX-viewer.png and OUT_PREFIX-game.png. Needs `npm ci --prefix web`, the web
+// build and build/release/bin/strahler (what scripts/test makes).
+import { spawn } from 'node:child_process';
+import { writeFileSync } from 'node:fs';
+import { dirname, join, resolve } from 'node:path';
+import { tmpdir } from 'node:os';
+import { fileURLToPath } from 'node:url';
+import { launchBrowser, openPage } from '../../web/tests/lib/browser.mjs';
+
+const [lon, lat] = process.argv.slice(2, 4).map(Number);
+const prefix = process.argv[4];
+if (!Number.isFinite(lon) || !Number.isFinite(lat) || !prefix) {
+  console.error('usage: node scripts/dev/screenshots.mjs LON LAT OUT_PREFIX [serve arguments...]');
+  process.exit(2);
+}
+const repo = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
+const WAIT_MS = 120_000;
+
+function serve(args) {
+  const child = spawn(join(repo, 'build/release/bin/strahler'),
+    ['serve', '--host', '127.0.0.1', '--port', '0', '--quiet', '--web-root', join(repo, 'web/dist'),
+      '--cache-dir', join(tmpdir(), 'strahler-screenshots-cache'), ...args], { stdio: ['ignore', 'pipe', 'inherit'] });
+  process.on('exit', () => child.kill('SIGKILL'));
+  return new Promise((done, fail) => {
+    let out = '';
+    child.stdout.on('data', (chunk) => {
+      out += chunk;
+      const m = /serving .* at (http:\/\/[^\s/]+)\//.exec(out);
+      if (m) done(m[1]);
+    });
+    child.on('exit', (code) => fail(new Error(`strahler serve exited with ${code}`)));
+  });
+}
+
+// The world's local metres of (lon, lat): Lambert azimuthal equal-area on the sphere about the
+// world's centre, as core/geometry LocalProjection.
+function toLocal([lon0, lat0], lon1, lat1) {
+  const r = Math.PI / 180, R = 6371008.8;
+  const [l, p, l0, p0] = [lon1 * r, lat1 * r, lon0 * r, lat0 * r];
+  const k = Math.sqrt(2 / (1 + Math.sin(p0) * Math.sin(p) + Math.cos(p0) * Math.cos(p) * Math.cos(l - l0)));
+  return [R * k * Math.cos(p) * Math.sin(l - l0),
+    R * k * (Math.cos(p0) * Math.sin(p) - Math.sin(p0) * Math.cos(p) * Math.cos(l - l0))];
+}
+
+const url = await serve(process.argv.slice(5));
+const browser = await launchBrowser();
+try {
+  const viewer = (await openPage(browser, `${url}/`)).page;
+  await viewer.waitForFunction(() => window.strahlerMap?.loaded(), null, { timeout: WAIT_MS });
+  await viewer.evaluate(([lo, la]) => window.strahlerMap.jumpTo({ center: [lo, la], zoom: 13, pitch: 60, bearing: 20 }), [lon, lat]);
+  await viewer.waitForFunction(() => {
+    const m = window.strahlerMap;
+    return m.loaded() && m.areTilesLoaded() && !m.isMoving();
+  }, null, { timeout: WAIT_MS, polling: 250 });
+  await viewer.waitForTimeout(1500);
+  writeFileSync(`${prefix}-viewer.png`, await viewer.screenshot());
+  const ground = await viewer.evaluate(([lo, la]) => {
+    const m = window.strahlerMap;
+    return (m.queryTerrainElevation([lo, la]) ?? 0) / (m.getTerrain()?.exaggeration ?? 1);
+  }, [lon, lat]);
+
+  const game = (await openPage(browser, `${url}/game.html`)).page;
+  await game.waitForFunction(() => window.strahlerGame?.frames > 5, null, { timeout: WAIT_MS });
+  const centre = await game.evaluate(() => window.strahlerGame.world.center);
+  const [x, y] = toLocal(centre, lon, lat);
+  // 250 m above the spot, 1.5 km south of it, looking north and a little down.
+  await game.evaluate(([gx, gz, h]) => {
+    const c = window.strahlerGame.camera;
+    c.position.set(gx, h + 250, gz + 1500);
+    c.lookAt(gx, h, gz - 500);
+  }, [x, -y, ground]);
+  await game.waitForFunction(() => {
+    const g = window.strahlerGame;
+    if (g.stats.inFlight > 0) { g.quietSince = undefined; return false; }
+    g.quietSince ??= g.frames;
+    return g.frames - g.quietSince > 30;
+  }, null, { timeout: WAIT_MS, polling: 100 });
+  writeFileSync(`${prefix}-game.png`, await game.screenshot());
+  console.log(`wrote ${prefix}-viewer.png and ${prefix}-game.png (ground ${ground.toFixed(0)} m)`);
+} finally {
+  await browser.close();
+  process.exit(0);
+}
