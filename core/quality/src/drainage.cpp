@@ -1,5 +1,7 @@
 #include "strahler/quality/drainage.h"
 
+#include "d8_grid.h"
+
 #include "strahler/base/assert.h"
 
 #include <algorithm>
@@ -12,11 +14,10 @@
 namespace strahler::quality {
 namespace {
 
-using Cell = std::uint32_t;
-
-constexpr std::array<int, 8> kDx = {1, 1, 0, -1, -1, -1, 0, 1};
-constexpr std::array<int, 8> kDy = {0, 1, 1, 1, 0, -1, -1, -1};
-constexpr double kDiagonal = 1.4142135623730951;
+using d8::Cell;
+using d8::kDiagonal;
+using d8::kDx;
+using d8::kDy;
 constexpr Cell kNoCell = std::numeric_limits<Cell>::max();
 
 /// Working state of a land cell; water cells stay kUnresolved and are never looked at.
@@ -25,36 +26,23 @@ enum class State : std::uint8_t { kUnresolved, kDrains, kUndrained, kShallow, kC
 /// Raster shape and neighbour enumeration.
 class Grid {
 public:
-  explicit Grid(const HeightRaster& raster)
-      : width_(raster.width), height_(raster.height), classes_(raster.cellClass) {}
+  explicit Grid(const HeightRaster& raster) : raster_(raster) {}
 
-  std::size_t size() const noexcept { return std::size_t(width_) * std::size_t(height_); }
-  bool isLand(Cell c) const noexcept { return classes_[c] == std::uint8_t(CellClass::kLand); }
+  std::size_t size() const noexcept {
+    return std::size_t(raster_.width) * std::size_t(raster_.height);
+  }
+  bool isLand(Cell c) const noexcept { return d8::isLand(raster_, c); }
 
   /// Calls fn(neighbour, k) for each of the 8 neighbours inside the raster (k indexes kDx).
   template <class Fn> void forEachNeighbour(Cell c, Fn&& fn) const {
-    const int x = int(c % Cell(width_)), y = int(c / Cell(width_));
-    for (std::size_t k = 0; k < 8; ++k) {
-      const int nx = x + kDx[k], ny = y + kDy[k];
-      if (nx >= 0 && ny >= 0 && nx < width_ && ny < height_)
-        fn(Cell(ny) * Cell(width_) + Cell(nx), k);
-    }
+    d8::forEachNeighbour(raster_.width, raster_.height, c, fn);
   }
 
   /// True if c is on the border or has a water neighbour.
-  bool touchesSink(Cell c) const {
-    const int x = int(c % Cell(width_)), y = int(c / Cell(width_));
-    if (x == 0 || y == 0 || x == width_ - 1 || y == height_ - 1)
-      return true;
-    bool sink = false;
-    forEachNeighbour(c, [&](Cell n, std::size_t) { sink = sink || !isLand(n); });
-    return sink;
-  }
+  bool touchesSink(Cell c) const { return d8::touchesSink(raster_, c); }
 
 private:
-  int width_;
-  int height_;
-  const std::vector<std::uint8_t>& classes_;
+  const HeightRaster& raster_;
 };
 
 /// Result of the priority-flood over land cells.

@@ -1,5 +1,7 @@
 #include "strahler/quality/flow_field.h"
 
+#include "d8_grid.h"
+
 #include "strahler/base/assert.h"
 
 #include <array>
@@ -12,35 +14,12 @@
 namespace strahler::quality {
 namespace {
 
-using Cell = std::uint32_t;
-
-constexpr std::array<int, 8> kDx = {1, 1, 0, -1, -1, -1, 0, 1};
-constexpr std::array<int, 8> kDy = {0, 1, 1, 1, 0, -1, -1, -1};
-constexpr double kSqrt2 = 1.4142135623730951;
-
-bool isLand(const HeightRaster& r, std::size_t i) {
-  return r.cellClass[i] == std::uint8_t(CellClass::kLand);
-}
-
-/// Calls fn(neighbour, k) for each neighbour of c inside a width x height raster.
-template <class Fn> void forEachNeighbour(int width, int height, Cell c, Fn&& fn) {
-  const int x = int(c % Cell(width)), y = int(c / Cell(width));
-  for (std::size_t k = 0; k < 8; ++k) {
-    const int nx = x + kDx[k], ny = y + kDy[k];
-    if (nx >= 0 && ny >= 0 && nx < width && ny < height)
-      fn(Cell(ny) * Cell(width) + Cell(nx), k);
-  }
-}
-
-bool touchesSink(const HeightRaster& r, Cell c) {
-  const int x = int(c % Cell(r.width)), y = int(c / Cell(r.width));
-  if (x == 0 || y == 0 || x == r.width - 1 || y == r.height - 1)
-    return true;
-  bool sink = false;
-  forEachNeighbour(r.width, r.height, c,
-                   [&](Cell n, std::size_t) { sink = sink || !isLand(r, n); });
-  return sink;
-}
+using d8::Cell;
+using d8::forEachNeighbour;
+using d8::isLand;
+using d8::kDx;
+using d8::kDy;
+using d8::touchesSink;
 
 struct OpenEntry {
   float level;
@@ -89,7 +68,7 @@ Cell steepestDescent(const HeightRaster& r, const FlowField& flow, Cell c) {
   forEachNeighbour(r.width, r.height, c, [&](Cell nb, std::size_t k) {
     if (!isLand(r, nb))
       return;
-    const double run = (kDx[k] != 0 && kDy[k] != 0) ? kSqrt2 : 1.0;
+    const double run = (kDx[k] != 0 && kDy[k] != 0) ? d8::kDiagonal : 1.0;
     const double slope = (double(flow.filled[c]) - double(flow.filled[nb])) / run;
     if (slope > steepest) {
       steepest = slope;
@@ -174,7 +153,7 @@ double stepLength(const FlowField& flow, std::uint32_t from, std::uint32_t to) n
     return flow.cellSize;
   const bool diagonal = from % Cell(flow.width) != to % Cell(flow.width) &&
                         from / Cell(flow.width) != to / Cell(flow.width);
-  return diagonal ? flow.cellSize * kSqrt2 : flow.cellSize;
+  return diagonal ? flow.cellSize * d8::kDiagonal : flow.cellSize;
 }
 
 std::vector<float> distanceToMarked(int width, int height, double cellSize,

@@ -1,5 +1,7 @@
 #include "strahler/quality/relief.h"
 
+#include "d8_grid.h"
+
 #include "strahler/base/assert.h"
 
 #include <algorithm>
@@ -12,7 +14,8 @@
 namespace strahler::quality {
 namespace {
 
-using Cell = std::uint32_t;
+using d8::Cell;
+using d8::isLand;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kRadToDeg = 57.29577951308232;
@@ -21,10 +24,6 @@ constexpr double kBinWidth = 0.2;   // slope–area: log10(A) bin width
 constexpr std::size_t kMinBin = 30; // slope–area: cells per kept bin
 constexpr double kSmoothingSigmaM = 1000.0;
 constexpr double kInteriorM = 2000.0;
-
-bool isLand(const HeightRaster& r, std::size_t i) {
-  return r.cellClass[i] == std::uint8_t(CellClass::kLand);
-}
 
 /// The p-quantile (0..1) of `values` with linear interpolation between ranks; reorders them.
 double quantile(std::vector<double>& values, double p) {
