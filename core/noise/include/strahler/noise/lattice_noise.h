@@ -23,6 +23,11 @@ public:
 
   /// Largest |coordinate| atLanes() accepts (its lattice cells are 32-bit).
   static constexpr double kLaneLimit = 2.0e9;
+  /// The lattice hash: corner (cx, cy) hashes to mix(cx·kPrimeX ^ cy·kPrimeY ^ seed) modulo
+  /// 2^32, mix(h) = (h ^ h >> 15) · kMix (other lattices of the evaluator use it too).
+  static constexpr std::uint32_t kPrimeX = 0x8da6b343u;
+  static constexpr std::uint32_t kPrimeY = 0xd8163841u;
+  static constexpr std::uint32_t kMix = 0x2c1b3c6du; ///< see kPrimeX
 
   /// Noise at p (lattice units); 0 where |p.x| or |p.y| ≥ kLaneLimit or not finite.
   double at(geometry::Vec2 p) const noexcept;
@@ -94,9 +99,6 @@ private:
     base::Vectors<2>::Doubles by2[8];
     base::Vectors<8>::Doubles by8[2];
   };
-  static constexpr std::uint32_t kPrimeX = 0x8da6b343u;
-  static constexpr std::uint32_t kPrimeY = 0xd8163841u;
-
   /// Final mix of a cell's hash (one xor-shift-multiply round), 32 bits whose top 4
   /// (h >> 28) pick the gradient. `wrap` keeps 32 bits (the identity on 32-bit words): a
   /// product's low 32 bits depend only on its operands' low 32 bits, so wrapping after each
@@ -104,7 +106,7 @@ private:
   template <class W, class Wrap, class Times>
   [[gnu::always_inline]] static W mix(W h, Wrap&& wrap, Times&& times) noexcept {
     h ^= h >> 15;
-    return wrap(times(h, 0x2c1b3c6du));
+    return wrap(times(h, kMix));
   }
   /// Perlin's blend of the gradients of the four corners of lattice cell (cx, cy) at offset
   /// (x, y) inside it; dot(h, dx, dy) is gradient h >> 28 (of 16) of a corner's mixed hash h
