@@ -5,16 +5,17 @@
 namespace strahler::primitives {
 
 /// Terrain primitive T (Section 6.1): a disc of influence with a base elevation and noise.
-/// h(p) = elevation + amplitude · n(p), w(p) = (1 − d²/r²)² for d < r, else 0, where n is
-/// the world's shared fBm noise with gain `roughness`. Blending many primitives blends their
-/// elevations and their noise parameters (amplitude, roughness) and adds one shared noise, so
-/// the noise stays coherent instead of averaging away (construction::World).
+/// h(p) = elevation + Σ_k amplitude · roughness^k · octave_k(p), w(p) = (1 − d²/r²)² for
+/// d < r, else 0, where the octaves are the world's shared relief octaves (gullies down the
+/// slope, then gradient noise). Blending many primitives blends their elevations and their
+/// relief parameters (amplitude, roughness) and adds one shared relief, so it stays coherent
+/// instead of averaging away (construction::World).
 struct TerrainPrimitive {
   geometry::Vec2 center;  ///< c, local metres.
   double radius = 0.0;    ///< r, metres.
   double elevation = 0.0; ///< c_z, metres (Section 7.2 interpolation).
-  double amplitude = 0.0; ///< Noise amplitude, metres (rough mountains, smooth plains).
-  double roughness = 0.5; ///< fBm gain per octave, in [0.3, 0.7].
+  double amplitude = 0.0; ///< Relief amplitude, metres (rough mountains, smooth plains).
+  double roughness = 0.5; ///< Gain per octave, in [0.3, 0.7].
 
   friend bool operator==(const TerrainPrimitive&, const TerrainPrimitive&) = default;
 };

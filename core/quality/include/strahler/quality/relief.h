@@ -28,8 +28,8 @@ struct SlopeStatistics {
 struct ConfluenceCount {
   std::size_t confluences = 0; ///< Channel cells with ≥ 2 channel inflows.
   std::size_t threeOrMore = 0; ///< Those with ≥ 3.
-  double shareThreeOrMore = std::numeric_limits<double>::quiet_NaN(); ///< threeOrMore /
-                                                                      ///< confluences; NaN without.
+  /// threeOrMore / confluences; NaN without confluences.
+  double shareThreeOrMore = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Every relief figure that needs only a height raster.
