@@ -223,8 +223,14 @@ TEST(WorldCommands, InfoRenderAndAnalyzeAWorldFile) {
     EXPECT_TRUE(relief.contains(key)) << key;
   EXPECT_GT(relief["slopeDeg"]["p50"].get<double>(), 0.0);
   EXPECT_GT(relief["drainageDensityKmPerKm2"]["1"].get<double>(), 0.0);
-  EXPECT_GE(relief["channelsNearRiversFraction"].get<double>(), 0.0);
-  EXPECT_LE(relief["riversNearChannelsFraction"].get<double>(), 1.0);
+  // The realism targets this world meets (generator version 5).
+  EXPECT_GE(relief["channelsNearRiversFraction"].get<double>(), 0.9);
+  EXPECT_GE(relief["riversNearChannelsFraction"].get<double>(), 0.95);
+  EXPECT_GE(relief["slopeArea"]["theta"].get<double>(), 0.3);
+  EXPECT_LE(relief["slopeArea"]["theta"].get<double>(), 0.6);
+  EXPECT_GE(relief["slopeArea"]["r2"].get<double>(), 0.7);
+  EXPECT_LE(relief["networkConfluences3PlusFraction"].get<double>(), 0.05);
+  EXPECT_LE(relief["steeperThan45Fraction"].get<double>(), 0.005);
   EXPECT_GE(relief["sinuosity"]["B"].get<double>(), 1.0);
   EXPECT_EQ(relief["raster"]["cellSizeM"].get<double>(), 30.0);
 }

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -98,6 +99,31 @@ TEST(Hydrology, IsDeterministic) {
     ASSERT_EQ(a.analysis.ridgeElevation[v], b.analysis.ridgeElevation[v]);
   }
   ASSERT_EQ(a.analysis.flow, b.analysis.flow);
+}
+
+TEST(Hydrology, RiverSlopesFollowTheSlopeAreaLaw) {
+  // With one river slope s everywhere, every edge falls by s · (A / referenceArea)^−θ per
+  // metre, A its upstream node's drainage area: steep headwaters, gentle trunks.
+  input::WorldSpec spec = testing::defaultIslandSpec();
+  spec.params.slopeMin = spec.params.slopeMax = 0.05;
+  const Hydrology h = buildHydrology(spec).value();
+  double steepest = 0.0, gentlest = 1.0;
+  for (std::size_t i = 0; i < h.network.nodes.size(); ++i) {
+    const network::RiverNode& node = h.network.nodes[i];
+    if (!node.parent.valid())
+      continue;
+    const network::RiverNode& parent = h.network.node(node.parent);
+    const double length = distance(node.position, parent.position);
+    const double expected =
+        0.05 *
+        std::pow(h.analysis.drainageAreaKm2[i] / spec.params.referenceArea, -spec.params.concavity);
+    const double slope = (node.elevation - parent.elevation) / length;
+    ASSERT_NEAR(slope, std::max(expected, 0.01 / length), 1e-9 * expected) << "node " << i;
+    steepest = std::max(steepest, slope);
+    gentlest = std::min(gentlest, slope);
+  }
+  EXPECT_GT(steepest, 0.05 * 2.0) << "headwaters (A < 2 km²) are over twice as steep";
+  EXPECT_LT(gentlest, 0.05 * 0.5) << "the largest rivers (A > 50 km²) under half as steep";
 }
 
 TEST(FlowFromArea, FollowsDunneAndLeopold) {
