@@ -2,6 +2,7 @@
 
 #include "strahler/base/lanes.h"
 #include "strahler/construction/world.h"
+#include "strahler/primitives/river_primitives.h"
 
 #include <array>
 #include <cstdint>
@@ -30,8 +31,10 @@ struct TerrainSums {
   alignas(64) double count[kTerrainLanes];
   alignas(64) double slopeX[kTerrainLanes];       ///< Σ g_i dx_i (∇w_i = −4 g_i d_i)
   alignas(64) double slopeY[kTerrainLanes];       ///< Σ g_i dy_i
-  alignas(64) double slopeHeightX[kTerrainLanes]; ///< Σ g_i dx_i c_i
-  alignas(64) double slopeHeightY[kTerrainLanes]; ///< Σ g_i dy_i c_i
+  alignas(64) double slopeHeightX[kTerrainLanes]; ///< Σ g_i dx_i h_i (h_i: i's plane at the point)
+  alignas(64) double slopeHeightY[kTerrainLanes]; ///< Σ g_i dy_i h_i
+  alignas(64) double planeX[kTerrainLanes];       ///< Σ w_i s_i.x (the planes' gradients)
+  alignas(64) double planeY[kTerrainLanes];       ///< Σ w_i s_i.y
 };
 
 /// One call of the terrain blend: `groups` groups (1 or 2) of base::kLanes points, group g at
@@ -63,8 +66,8 @@ inline constexpr std::size_t kChunk = 8;
 /// candidate in turn, the closest point of its curve to each point (points outside its support
 /// box are not searched, nor runs of the curve before firstChunk or from endChunk on; ties keep
 /// the first segment) and, within its radius, its profile's sample (primitives::riverProfile,
-/// weight primitives::falloff), united with the samples before it by influence
-/// (operators.h: uniteByInfluence). Points no river reaches get {0, 0}.
+/// weight primitives::riverWeight), united with the samples before it by the deeper cut into
+/// the terrain (operators.h: uniteByCut). Points no river reaches get {0, 0}.
 struct RiverLaneArgs {
   std::span<const World::RiverCandidate> rivers;
   const World::HotRiver* hot = nullptr;        ///< per river primitive
@@ -73,6 +76,8 @@ struct RiverLaneArgs {
   /// Per segment, its water elevation at its start, then its rise to its end.
   const double* water = nullptr;
   const geometry::Vec2* points = nullptr;
+  double spacing = 0.0; ///< between the samples, m: sets the channels' floors (riverFloor)
+  const double* terrain = nullptr; ///< the terrain blend's height at each point
   double* riverH = nullptr;
   double* riverW = nullptr;
 };

@@ -80,7 +80,7 @@ World::World(WorldData data)
   for (std::uint32_t i = 0; i < data_.terrain.size(); ++i) {
     const primitives::TerrainPrimitive& t = data_.terrain[i];
     const double radius2 = t.radius * t.radius;
-    hot_.push_back({t.center, radius2, radius2 > 0.0 ? 1.0 / radius2 : 0.0, t.elevation,
+    hot_.push_back({t.center, radius2, radius2 > 0.0 ? 1.0 / radius2 : 0.0, t.elevation, t.slope,
                     std::max(t.amplitude, 0.0), std::clamp(t.roughness, 0.0, kMaxRoughness)});
     terrainGrid_.insert(geometry::Aabb{t.center, t.center}.expanded(t.radius), i);
     terrainReach_ = std::max(terrainReach_, withRoundingMargin(t.radius));
@@ -163,9 +163,9 @@ void World::terrainLanes(std::size_t lanes, const Vec2* first, const Vec2* secon
     detail::terrainLanes(args);
 }
 
-void World::riversLanes(std::size_t lanes, const Vec2* points,
-                        std::span<const RiverCandidate> rivers, double* riverH,
-                        double* riverW) const noexcept {
+void World::riversLanes(std::size_t lanes, const Vec2* points, double spacing,
+                        const double* terrain, std::span<const RiverCandidate> rivers,
+                        double* riverH, double* riverW) const noexcept {
   if (rivers.empty()) { // most runs: no call
     std::fill_n(riverH, lanes, 0.0);
     std::fill_n(riverW, lanes, 0.0);
@@ -177,6 +177,8 @@ void World::riversLanes(std::size_t lanes, const Vec2* points,
                                    hotSegments_.data(),
                                    water_.data(),
                                    points,
+                                   spacing,
+                                   terrain,
                                    riverH,
                                    riverW};
   if (lanes == 1)
@@ -235,7 +237,7 @@ World::Evaluation World::evaluateFrom(Vec2 p, double spacing,
   double h = 0.0, w = 0.0;
   Sample river;
   terrainLanes(1, &p, nullptr, {spacing, spacing}, terrain, &h, &w);
-  riversLanes(1, &p, rivers, &river.h, &river.w);
+  riversLanes(1, &p, spacing, &h, rivers, &river.h, &river.w);
   Evaluation e;
   e.terrain = {h, w};
   e.rivers = river;
@@ -281,7 +283,7 @@ void World::heightsFrom(std::span<const Vec2> points, double spacing,
       group = padded.data();
     }
     terrainLanes(kLanes, group, nullptr, {spacing, spacing}, terrain, h.data(), w.data());
-    finishGroup(group, h.data(), w.data(), rivers, shore, heights.subspan(begin, n));
+    finishGroup(group, spacing, h.data(), w.data(), rivers, shore, heights.subspan(begin, n));
   }
 }
 
@@ -296,19 +298,20 @@ void World::heightsFrom(const PointRun& first, const PointRun& second,
   std::array<double, 2 * kLanes> h, w;
   terrainLanes(kLanes, first.points.data(), second.points.data(), {first.spacing, second.spacing},
                terrain, h.data(), w.data());
-  finishGroup(first.points.data(), h.data(), w.data(), first.rivers, shore, first.heights);
-  finishGroup(second.points.data(), h.data() + kLanes, w.data() + kLanes, second.rivers, shore,
-              second.heights);
+  finishGroup(first.points.data(), first.spacing, h.data(), w.data(), first.rivers, shore,
+              first.heights);
+  finishGroup(second.points.data(), second.spacing, h.data() + kLanes, w.data() + kLanes,
+              second.rivers, shore, second.heights);
 }
 
-void World::finishGroup(const Vec2* group, const double* h, const double* w,
+void World::finishGroup(const Vec2* group, double spacing, const double* h, const double* w,
                         std::span<const RiverCandidate> rivers, const Shore& shore,
                         std::span<double> heights) const noexcept {
   constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
   // Arrays of doubles, not of Samples: GCC zeroes an array of Samples (their members have
   // initialisers) by `rep stos`, which cost more than the river search at most zooms.
   std::array<double, kLanes> riverH, riverW;
-  riversLanes(kLanes, group, rivers, riverH.data(), riverW.data());
+  riversLanes(kLanes, group, spacing, h, rivers, riverH.data(), riverW.data());
   const std::size_t n = heights.size();
   if (shore.coast == Coast::kInland) { // shapeCoast()'s inland case, without a call per sample
     for (std::size_t l = 0; l < n; ++l)

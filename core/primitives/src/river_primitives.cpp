@@ -218,13 +218,13 @@ double channelDepth(double flow) noexcept {
 double valleyRadius(RiverType type, double width) noexcept {
   switch (type) {
   case RiverType::kStraight:
-    return 120.0 + 20.0 * width;
+    return 240.0 + 40.0 * width;
   case RiverType::kSinuous:
-    return 180.0 + 30.0 * width;
+    return 360.0 + 60.0 * width;
   case RiverType::kBraided:
-    return 250.0 + 30.0 * width;
+    return 500.0 + 60.0 * width;
   case RiverType::kDelta:
-    return 300.0 + 30.0 * width;
+    return 600.0 + 60.0 * width;
   }
   return 180.0;
 }

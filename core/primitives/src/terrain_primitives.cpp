@@ -17,6 +17,9 @@ using geometry::Vec2;
 constexpr std::uint64_t kTerrainStream = 0x7465727261696eull;
 constexpr double kMinSpacingFraction = 0.6;
 constexpr double kAmplitudePerMetreOfRelief = 0.3;
+/// Steepest plane a primitive gets (tan 40°).
+constexpr double kMaxHillslope = 0.84;
+constexpr double kPlaneShare = 0.25;
 
 /// The jittered candidate of grid cell (i, j) and its random priority.
 struct Candidate {
@@ -56,10 +59,11 @@ bool inRegion(const geometry::MultiPolygon& region, Vec2 p) {
   return false;
 }
 
-/// Nearest point of a set of river curves: distance and water elevation there.
+/// Nearest point of a set of river curves (or ridges): distance, elevation there and the point.
 struct RiverHit {
   double distance = std::numeric_limits<double>::infinity();
   double elevation = 0.0;
+  Vec2 point;
 };
 
 RiverHit nearestRiver(const std::vector<const RiverPrimitive*>& curves, Vec2 p) {
@@ -74,7 +78,7 @@ RiverHit nearestRiver(const std::vector<const RiverPrimitive*>& curves, Vec2 p) 
         continue;
       const double span = distance(a.position, b.position);
       const double t = span > 0 ? distance(a.position, q) / span : 0.0;
-      best = {d, a.elevation + (b.elevation - a.elevation) * t};
+      best = {d, a.elevation + (b.elevation - a.elevation) * t, q};
     }
   return best;
 }
@@ -118,7 +122,7 @@ RiverHit nearestRidge(const std::vector<Ridge>& ridges, Vec2 p) {
     if (d >= best.distance)
       continue;
     const double span = distance(r.a, r.b);
-    best = {d, r.za + (r.zb - r.za) * (span > 0 ? distance(r.a, q) / span : 0.0)};
+    best = {d, r.za + (r.zb - r.za) * (span > 0 ? distance(r.a, q) / span : 0.0), q};
   }
   return best;
 }
@@ -178,13 +182,24 @@ private:
     const network::RiverNode& node = h_.network.node(id);
     RiverHit a = nearestRiver(curves, c);
     if (!std::isfinite(a.distance))
-      a = {distance(c, node.position), node.elevation};
+      a = {distance(c, node.position), node.elevation, node.position};
     RiverHit b = nearestRidge(ridges, c);
+    // Unit vectors from the river point and the ridge point to c (no ridge: straight on).
+    const Vec2 fromRiver = a.distance > 0 ? (c - a.point) * (1.0 / a.distance) : Vec2{};
     if (!std::isfinite(b.distance))
-      b = {kTerrainSpacing, a.elevation + relief_.ridgeLambda(c) * kTerrainSpacing};
+      b = {kTerrainSpacing, a.elevation + relief_.ridgeLambda(c) * kTerrainSpacing,
+           c + fromRiver * kTerrainSpacing};
+    const Vec2 fromRidge = b.distance > 0 ? (c - b.point) * (1.0 / b.distance) : Vec2{};
     const double sum = a.distance + b.distance;
     const double cz =
         sum > 0 ? (a.distance * b.elevation + b.distance * a.elevation) / sum : a.elevation;
+    // ∇cz with the river's and ridge's elevations held: (z_b − z_a)(u_a d_b − u_b d_a) / (d_a
+    // + d_b)², u the unit vectors above; at most kMaxHillslope.
+    Vec2 slope = sum > 0 ? (fromRiver * b.distance - fromRidge * a.distance) *
+                               ((b.elevation - a.elevation) / (sum * sum))
+                         : Vec2{};
+    if (const double steepness = length(slope); steepness > kMaxHillslope)
+      slope = slope * (kMaxHillslope / steepness);
     const double relief = std::max(0.0, b.elevation - a.elevation);
     const double amplitude =
         kAmplitudePerMetreOfRelief * relief * smoothstep(a.distance / (0.6 * kTerrainSpacing));
@@ -192,6 +207,8 @@ private:
     t.center = quantize(c);
     t.radius = quantize(kTerrainRadiusInSpacings * kTerrainSpacing, Quantum::kRadius);
     t.elevation = quantize(cz, Quantum::kElevation);
+    slope = slope * kPlaneShare;
+    t.slope = {quantize(slope.x, Quantum::kSlope), quantize(slope.y, Quantum::kSlope)};
     t.amplitude = quantize(amplitude, Quantum::kElevation);
     t.roughness = quantize(0.4 + 0.1 * relief_.mountainousness(c), Quantum::kRoughness);
     return t;

@@ -355,12 +355,16 @@ Status Decoder::decodeTerrain() {
   STRAHLER_RETURN_IF_ERROR(expectSize("terrain.elevation", t.elevation_size(), n, unit));
   STRAHLER_RETURN_IF_ERROR(expectSize("terrain.amplitude", t.amplitude_size(), n, unit));
   STRAHLER_RETURN_IF_ERROR(expectSize("terrain.roughness", t.roughness_size(), n, unit));
+  STRAHLER_RETURN_IF_ERROR(expectSize("terrain.slope_x", t.slope_x_size(), n, unit));
+  STRAHLER_RETURN_IF_ERROR(expectSize("terrain.slope_y", t.slope_y_size(), n, unit));
   DeltaReader x(t.x(), "terrain.x");
   DeltaReader y(t.y(), "terrain.y");
   DeltaReader radius(t.radius(), "terrain.radius");
   DeltaReader elevation(t.elevation(), "terrain.elevation");
   DeltaReader amplitude(t.amplitude(), "terrain.amplitude");
   DeltaReader roughness(t.roughness(), "terrain.roughness");
+  DeltaReader slopeX(t.slope_x(), "terrain.slope_x");
+  DeltaReader slopeY(t.slope_y(), "terrain.slope_y");
   world_.terrain.resize(n);
   for (primitives::TerrainPrimitive& p : world_.terrain) {
     STRAHLER_RETURN_IF_ERROR(read(x, Quantum::kPosition, p.center.x));
@@ -369,6 +373,8 @@ Status Decoder::decodeTerrain() {
     STRAHLER_RETURN_IF_ERROR(read(elevation, Quantum::kElevation, p.elevation));
     STRAHLER_RETURN_IF_ERROR(read(amplitude, Quantum::kElevation, p.amplitude));
     STRAHLER_RETURN_IF_ERROR(read(roughness, Quantum::kRoughness, p.roughness));
+    STRAHLER_RETURN_IF_ERROR(read(slopeX, Quantum::kSlope, p.slope.x));
+    STRAHLER_RETURN_IF_ERROR(read(slopeY, Quantum::kSlope, p.slope.y));
   }
   return base::Ok{};
 }

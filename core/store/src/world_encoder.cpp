@@ -185,6 +185,8 @@ void encodeTerrain(const std::vector<primitives::TerrainPrimitive>& terrain,
   DeltaColumn elevation(out.mutable_elevation());
   DeltaColumn amplitude(out.mutable_amplitude());
   DeltaColumn roughness(out.mutable_roughness());
+  DeltaColumn slopeX(out.mutable_slope_x());
+  DeltaColumn slopeY(out.mutable_slope_y());
   for (const primitives::TerrainPrimitive& t : terrain) {
     x.add(quanta(t.center.x, Quantum::kPosition));
     y.add(quanta(t.center.y, Quantum::kPosition));
@@ -192,6 +194,8 @@ void encodeTerrain(const std::vector<primitives::TerrainPrimitive>& terrain,
     elevation.add(quanta(t.elevation, Quantum::kElevation));
     amplitude.add(quanta(t.amplitude, Quantum::kElevation));
     roughness.add(quanta(t.roughness, Quantum::kRoughness));
+    slopeX.add(quanta(t.slope.x, Quantum::kSlope));
+    slopeY.add(quanta(t.slope.y, Quantum::kSlope));
   }
 }
 

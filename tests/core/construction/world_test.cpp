@@ -66,7 +66,7 @@ Sample referenceTerrain(const World& world, Vec2 p, double spacing) {
   const auto gullySeed =
       static_cast<std::uint32_t>(base::mixHash(world.data().params.seed, 0x67756c6c79ull));
   double weight = 0.0, weightedHeight = 0.0, amplitude = 0.0, roughness = 0.0;
-  Vec2 weightGradient, heightGradient; // Σ ∇w_i, Σ ∇w_i c_i
+  Vec2 weightGradient, heightGradient, planeGradient; // Σ ∇w_i, Σ ∇w_i h_i, Σ w_i s_i
   int count = 0;
   for (const primitives::TerrainPrimitive& t : world.data().terrain) {
     const double r2 = t.radius * t.radius;
@@ -74,18 +74,20 @@ Sample referenceTerrain(const World& world, Vec2 p, double spacing) {
     if (w <= 0.0)
       continue;
     ++count;
+    const double plane = t.elevation + dot(t.slope, p - t.center);
     weight += w;
-    weightedHeight += w * t.elevation;
+    weightedHeight += w * plane;
     amplitude += w * t.amplitude;
     roughness += w * std::min(t.roughness, World::kMaxRoughness);
     const Vec2 gradient = (p - t.center) * (-4.0 * (1.0 - lengthSquared(p - t.center) / r2) / r2);
     weightGradient = weightGradient + gradient;
-    heightGradient = heightGradient + gradient * t.elevation;
+    heightGradient = heightGradient + gradient * plane;
+    planeGradient = planeGradient + t.slope * w;
   }
   if (count == 0)
     return {};
   const double base = weightedHeight / weight;
-  Vec2 slope = (heightGradient - weightGradient * base) * (1.0 / weight);
+  Vec2 slope = (heightGradient - weightGradient * base + planeGradient) * (1.0 / weight);
   const double g = roughness / weight;
   double octave = amplitude / weight, sum = 0.0, flanks = 1.0;
   for (int k = 1; k < NoiseOctaves::kOctaves; ++k) {
@@ -110,8 +112,9 @@ Sample referenceTerrain(const World& world, Vec2 p, double spacing) {
   return {base + sum, weight / count};
 }
 
-/// U(R…) at p from its definition, every segment of every river visited.
-Sample referenceRivers(const World& world, Vec2 p) {
+/// U(R…) at p sampled `spacing` apart over terrain height `terrain` from its definition, every
+/// segment of every river visited.
+Sample referenceRivers(const World& world, Vec2 p, double spacing, double terrain) {
   Sample best;
   for (const primitives::RiverPrimitive& r : world.data().rivers) {
     double nearest = std::numeric_limits<double>::infinity(), elevation = 0.0, along = 0.0;
@@ -126,13 +129,15 @@ Sample referenceRivers(const World& world, Vec2 p) {
       elevation = r.curve[k].elevation + (r.curve[k + 1].elevation - r.curve[k].elevation) * t;
       along = (static_cast<double>(k) + t) / static_cast<double>(r.curve.size() - 1);
     }
-    const double w = primitives::falloff(nearest * nearest, r.radius * r.radius);
-    if (w <= 0.0)
-      continue;
     const double width = r.widthUp + (r.widthDown - r.widthUp) * along;
     const double depth = r.depthUp + (r.depthDown - r.depthUp) * along;
-    const Sample s{elevation + primitives::riverProfile(r.type, width, depth, nearest), w};
-    best = best.w > 0.0 ? uniteByInfluence(best, s) : s;
+    const double floor = primitives::riverFloor(r.radius, spacing);
+    const double reach = primitives::valleyReach(r.radius, terrain - elevation);
+    const double w = nearest < reach ? primitives::riverWeight(width, reach, nearest, floor) : 0.0;
+    if (w <= 0.0)
+      continue;
+    const Sample s{elevation + primitives::riverProfile(r.type, width, depth, nearest, floor), w};
+    best = best.w > 0.0 ? uniteByCut(best, s, terrain) : s;
   }
   return best;
 }
@@ -155,7 +160,7 @@ TEST(World, EvaluationMatchesThePlainDefinition) {
     const double spacing = std::ldexp(1.0, static_cast<int>(rng.below(10))) * 0.5;
     const World::Evaluation e = world.evaluate(p, spacing);
     const Sample terrain = referenceTerrain(world, p, spacing);
-    const Sample rivers = referenceRivers(world, p);
+    const Sample rivers = referenceRivers(world, p, spacing, e.terrain.h);
     EXPECT_NEAR(e.terrain.h, terrain.h, 1e-9) << p.x << ", " << p.y << " spacing " << spacing;
     EXPECT_NEAR(e.terrain.w, terrain.w, 1e-12);
     EXPECT_NEAR(e.rivers.h, rivers.h, 1e-9) << p.x << ", " << p.y;
@@ -290,7 +295,7 @@ TEST(World, TerrainCoversTheLand) {
   EXPECT_GT(land, 5000u);
 }
 
-TEST(World, CoarserSpacingOnlyFadesShortOctaves) {
+TEST(World, CoarserSpacingOnlyFadesShortOctavesAndWidensFloors) {
   const World& world = defaultWorld();
   const geometry::Aabb box = world.land().bounds();
   double worst = 0.0;
@@ -298,9 +303,8 @@ TEST(World, CoarserSpacingOnlyFadesShortOctaves) {
     const Vec2 p = box.min + Vec2{box.size().x * (i + 0.5) / 400, box.size().y * 0.5};
     const World::Evaluation fine = world.evaluate(p, 1.0);
     const World::Evaluation coarse = world.evaluate(p, 500.0);
-    // Same primitives, same rivers: only the noise differs...
+    // Same primitives: only the noise and the rivers' floors (primitives::riverFloor) differ...
     ASSERT_EQ(fine.terrain.w, coarse.terrain.w);
-    ASSERT_EQ(fine.rivers.h, coarse.rivers.h);
     worst = std::max(worst, std::abs(fine.height - coarse.height));
   }
   // ... by at most the amplitude of the octaves under 2 km (a few tens of metres).

@@ -99,8 +99,8 @@ TEST(WorldCache, OtherFormatVersionIsDiscarded) {
   auto payload = detail::unframe(bytes, "w"); // A view into `bytes`.
   ASSERT_TRUE(payload.ok());
   ASSERT_TRUE(cache.save(world).ok());
-  overwrite(cache.pathFor(world.cacheKey), detail::frame(payload.value(), 2));
-  expectDiscarded(cache, world.cacheKey, {"has format version 2, this strahler reads version 1"});
+  overwrite(cache.pathFor(world.cacheKey), detail::frame(payload.value(), 1));
+  expectDiscarded(cache, world.cacheKey, {"has format version 1, this strahler reads version 2"});
 }
 
 TEST(WorldCache, FileHoldingAnotherKeyIsDiscarded) {

@@ -114,12 +114,12 @@ TEST(WorldCorruption, OtherFormatVersionIsNamed) {
   const std::string future = detail::frame(payload.value(), 7);
   EXPECT_TRUE(failsWith(decodeWorld(future, "old.world"), ErrorCode::kCorrupt,
                         "world file 'old.world' has format version 7, this strahler reads "
-                        "version 1"));
+                        "version 2"));
 }
 
 TEST(WorldCorruption, GarbagePayloadWithAValidChecksumIsRefused) {
-  EXPECT_TRUE(failsWith(decodeWorld(detail::frame("\xff\xff\xff\xff", 1), "g"), ErrorCode::kCorrupt,
-                        "not a valid strahler.v1.World protobuf message"));
+  EXPECT_TRUE(failsWith(decodeWorld(detail::frame("\xff\xff\xff\xff", kWorldFormatVersion), "g"),
+                        ErrorCode::kCorrupt, "not a valid strahler.v1.World protobuf message"));
   base::Rng rng(3);
   for (int trial = 0; trial < 3000; ++trial) {
     std::string payload(rng.below(200), '\0');
@@ -222,8 +222,8 @@ const std::vector<Inconsistency>& inconsistencies() {
        "stage time 0 is not finite"},
       {"invalid params", [](v1::World& m) { m.set_params_json(R"({"kappa": -1})"); },
        "the stored params are invalid: "},
-      {"payload version differs", [](v1::World& m) { m.set_format_version(2); },
-       "the payload says format version 2 but the header says 1"},
+      {"payload version differs", [](v1::World& m) { m.set_format_version(1); },
+       "the payload says format version 1 but the header says 2"},
   };
   return cases;
 }

@@ -83,6 +83,8 @@ primitives::TerrainPrimitive terrainNear(Vec2 c, double z, double spread, base::
   t.elevation = elevation(std::max(0.0, z + rng.uniform(-40.0, 60.0)));
   t.amplitude = elevation(rng.uniform(0.0, 40.0));
   t.roughness = quantize(rng.uniform(0.3, 0.7), Quantum::kRoughness);
+  t.slope = {quantize(rng.uniform(-0.8, 0.8), Quantum::kSlope),
+             quantize(rng.uniform(-0.8, 0.8), Quantum::kSlope)};
   return t;
 }
 

@@ -1,4 +1,4 @@
-// Golden payload of format version 1: any change to the encoding shows up here, and must
+// Golden payload of format version 2: any change to the encoding shows up here, and must
 // come with a new kWorldFormatVersion (old files would otherwise be misread, not refused).
 // The params JSON is left out of the golden bytes: it belongs to core/input and changes
 // whenever a parameter is added, which the cache key already accounts for.
@@ -36,9 +36,9 @@ WorldData makeTinyWorld() {
   w.flow = {2.5, 1.0, 1.25};
   w.riverTypes = {primitives::RiverType::kDelta, primitives::RiverType::kStraight,
                   primitives::RiverType::kSinuous};
-  w.terrain = {{{1400.0, 300.0}, 400.0, 10.0, 5.5, 0.5},
-               {{1000.0, 1000.0}, 350.125, 40.25, 12.0, 0.625},
-               {{2000.0, 1000.0}, 300.0, 55.0, 20.0, 0.3125}};
+  w.terrain = {{{1400.0, 300.0}, 400.0, 10.0, {0.25, -0.125}, 5.5, 0.5},
+               {{1000.0, 1000.0}, 350.125, 40.25, {0.0, 0.5}, 12.0, 0.625},
+               {{2000.0, 1000.0}, 300.0, 55.0, {-0.75, 0.0}, 20.0, 0.3125}};
   primitives::RiverPrimitive river;
   river.curve = {{{1000.0, 875.0}, 12.5}, {{1250.0, 500.0}, 6.0}, {{1500.0, 0.0}, 0.0}};
   river.widthUp = 4.0;
@@ -56,14 +56,14 @@ WorldData makeTinyWorld() {
 
 /// `protoc --decode=strahler.v1.World proto/strahler/v1/world.proto` shows it as text.
 constexpr std::string_view kGoldenPayloadHex =
-    "08011205312e322e331a20303031313232333334343535363637373838393961616262636364646565666622"
+    "08021205312e322e331a20303031313232333334343535363637373838393961616262636364646565666622"
     "0474696e7931000000000000214039000000000020454042160a01011201031a070080f702bdbb0122050000"
     "c8b8024a56090000000000408f4012030001021a07c0bb01bf3ec03e220500b06db26d2a0500c413a21f3203"
     "0604023a0304020242068827d00fc4134a030300015201005a0800000000000000006208000000000000f03f"
-    "6a0100520a0a0301010112030001005a300a0780af01ff31807d1205c025c057001a0680329d06a1062206d0"
-    "0fa22f86172a06cc08940ac00c320680088002ff0462320a01031206807da01fa01f1a06b06def2ebf3e2206"
-    "c413930aaf092a01403201283a0296014201644a02e0125201005a01006a100a05746f74616c110000000000"
-    "00e03f";
+    "6a0100520a0a0301010112030001005a400a0780af01ff31807d1205c025c057001a0680329d06a1062206d0"
+    "0fa22f86172a06cc08940ac00c320680088002ff043a068010ff0fff2f4206ff078028ff1f62320a01031206"
+    "807da01fa01f1a06b06def2ebf3e2206c413930aaf092a01403201283a0296014201644a02e0125201005a01"
+    "006a100a05746f74616c11000000000000e03f";
 
 std::string toHex(std::string_view bytes) {
   static constexpr char kDigits[] = "0123456789abcdef";
@@ -83,7 +83,7 @@ std::string fromHex(std::string_view hex) {
   return out;
 }
 
-TEST(WorldGolden, EncoderWritesTheVersion1Payload) {
+TEST(WorldGolden, EncoderWritesTheVersion2Payload) {
   v1::World message = detail::toProto(makeTinyWorld());
   message.clear_params_json();
   std::string payload;
@@ -92,14 +92,14 @@ TEST(WorldGolden, EncoderWritesTheVersion1Payload) {
       << "The world encoding changed: bump kWorldFormatVersion, then update the golden bytes.";
 }
 
-TEST(WorldGolden, Version1PayloadReadsBackTheSameWorld) {
+TEST(WorldGolden, Version2PayloadReadsBackTheSameWorld) {
   const WorldData tiny = makeTinyWorld();
   v1::World message;
   ASSERT_TRUE(message.ParseFromString(fromHex(kGoldenPayloadHex)));
   message.set_params_json(input::canonicalJson(tiny.params));
   std::string payload;
   ASSERT_TRUE(message.SerializeToString(&payload));
-  auto decoded = decodeWorld(detail::frame(payload, 1), "golden");
+  auto decoded = decodeWorld(detail::frame(payload, 2), "golden");
   ASSERT_TRUE(decoded.ok()) << decoded.error().message;
   EXPECT_TRUE(testing::worldsEqual(decoded.value(), tiny));
 }

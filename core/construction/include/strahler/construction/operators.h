@@ -26,11 +26,25 @@ inline Sample replace(Sample a, Sample b) noexcept {
 Sample unite(Sample a, Sample b) noexcept;
 
 /// Union by dominant influence: the sample with the larger w (on a tie, the lower h).
-/// strahler joins river primitives with it; see docs/architecture.md for why. Inline, as
-/// replace().
+/// Inline, as replace().
 inline Sample uniteByInfluence(Sample a, Sample b) noexcept {
   if (a.w != b.w)
     return a.w > b.w ? a : b;
+  return a.h <= b.h ? a : b;
+}
+
+/// Union by the deeper cut into `terrain`: a sample on its river's floor (w = 1) first, then
+/// the one whose replace() of the terrain is lower, i.e. the larger w·(terrain − h) (on a tie,
+/// the lower h). strahler joins river primitives with it; see docs/architecture.md for why.
+/// Off the floors the result of replace() is the least of every river's own, so it is
+/// continuous where rivers' supports overlap. Inline, as replace().
+inline Sample uniteByCut(Sample a, Sample b, double terrain) noexcept {
+  const bool floorA = a.w >= 1.0, floorB = b.w >= 1.0;
+  if (floorA != floorB)
+    return floorA ? a : b;
+  const double cutA = a.w * (terrain - a.h), cutB = b.w * (terrain - b.h);
+  if (cutA != cutB)
+    return cutA > cutB ? a : b;
   return a.h <= b.h ? a : b;
 }
 

@@ -147,6 +147,7 @@ public:
     double radius2 = 0.0;        ///< r²
     double inverseRadius2 = 0.0; ///< 1 / r² (0 for r = 0)
     double elevation = 0.0;      ///< c_z
+    geometry::Vec2 slope;        ///< the plane's gradient
     double amplitude = 0.0;      ///< ≥ 0
     double roughness = 0.0;      ///< fBm gain in [0, kMaxRoughness]
   };
@@ -183,13 +184,14 @@ private:
                     std::array<double, 2> spacing, std::span<const std::uint32_t> ids, double* h,
                     double* w) const noexcept;
   /// U(R…) at `lanes` points into riverH and riverW [0 .. lanes): 1 or base::kLanes, as
-  /// terrainLanes.
-  void riversLanes(std::size_t lanes, const geometry::Vec2* points,
-                   std::span<const RiverCandidate> rivers, double* riverH,
+  /// terrainLanes, samples `spacing` apart (their channels' floors: primitives::riverFloor),
+  /// over the terrain blend's heights `terrain` there (the union keeps the deeper cut).
+  void riversLanes(std::size_t lanes, const geometry::Vec2* points, double spacing,
+                   const double* terrain, std::span<const RiverCandidate> rivers, double* riverH,
                    double* riverW) const noexcept;
-  /// The rivers, the shore and the height at base::kLanes points `group` (heights.size() of
-  /// them are kept) from their terrain blend h, w.
-  void finishGroup(const geometry::Vec2* group, const double* h, const double* w,
+  /// The rivers, the shore and the height at base::kLanes points `group` `spacing` apart
+  /// (heights.size() of them are kept) from their terrain blend h, w.
+  void finishGroup(const geometry::Vec2* group, double spacing, const double* h, const double* w,
                    std::span<const RiverCandidate> rivers, const Shore& shore,
                    std::span<double> heights) const noexcept;
   /// Whether each of base::kLanes points `group` lies on land (1) or not (0): land().contains()

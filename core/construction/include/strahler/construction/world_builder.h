@@ -14,7 +14,7 @@ namespace strahler::construction {
 /// 2: the terrain blend mixes noise amplitude and roughness (docs/architecture.md).
 /// 5: rule 1 (fill) gives at most two children (binary confluences); concave river
 /// profiles, valleys scaled to the catchment, gully relief octaves.
-inline constexpr const char* kGeneratorVersion = "strahler-generator-5";
+inline constexpr const char* kGeneratorVersion = "strahler-generator-6";
 
 /// Runs the whole generation of Sections 4–7 on `spec`: network, blocks and analysis
 /// (analysis::buildHydrology), then river and terrain primitives ("primitives"), quantised to

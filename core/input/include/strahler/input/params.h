@@ -76,14 +76,14 @@ struct Params {
   double accessibilityRadius = 4000.0; ///< Radius of the land-fraction (concavity) measure; > 0.
 
   // --- Ridges (Section 5.1) ---
-  double lambda = 0.2;             ///< λ: ridge rise per metre from the river nodes, [0, 1].
+  double lambda = 0.35;            ///< λ: ridge rise per metre from the river nodes, [0, 1].
   double lambdaCoastFactor = 0.25; ///< λ multiplier at the coast (gentle beaches), (0, 1].
 
   // --- River long profiles ---
   // After growth, every edge's slope follows the stream-power steady state
   // S = s(p) · (A / referenceArea)^−concavity, A the drainage area at its upstream node
   // (km²) and s(p) the elevation law's slope above: steep headwaters, gentle lowlands.
-  double concavity = 0.45;     ///< θ of the slope–area law, in [0, 1]; 0 keeps s(p) everywhere.
+  double concavity = 0.3;      ///< θ of the slope–area law, in [0, 1]; 0 keeps s(p) everywhere.
   double referenceArea = 10.0; ///< km² at which an edge's slope is s(p); in (0, 10000].
 
   // --- Rosgen typing (Section 5.2) ---

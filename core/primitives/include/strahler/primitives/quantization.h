@@ -15,6 +15,7 @@ struct Quantum {
   static constexpr double kRadius = 0.125;   ///< Metres: radii and widths.
   static constexpr double kRoughness = 1.0 / 1024.0; ///< fBm gain.
   static constexpr double kFlow = 0.001;             ///< m³/s.
+  static constexpr double kSlope = 1.0 / 4096.0;     ///< Metres per metre: gradients.
 };
 
 /// v snapped to a multiple of `step` (computed as the file reader does: k · step).

@@ -4,7 +4,9 @@
 #include "strahler/input/params.h"
 #include "strahler/network/river_network.h"
 #include "strahler/primitives/river_primitive.h"
+#include "strahler/primitives/terrain_primitive.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace strahler::primitives {
@@ -33,17 +35,61 @@ inline double bankSlope(RiverType type) noexcept {
   return kBankSlope[static_cast<int>(type)];
 }
 
-/// The profile δ(d) across a river, relative to its water surface: a parabolic bed of the
-/// given depth for d < width/2 (flatter where hasFlatBed()), then banks rising with the
-/// type's bankSlope(). Evaluation repeats these operations in its vector kernels
-/// (core/construction evaluation_kernels.inc), tested against this definition.
-inline double riverProfile(RiverType type, double width, double depth, double d) noexcept {
+/// Metres of valley side per metre the terrain stands above a river's water (valleyReach): a
+/// valley deep below its terrain widens so that its sides stay below about 35°.
+inline constexpr double kValleyRunPerRise = 2.2;
+
+/// How far a river of valley radius `radius` (its support) reaches where the terrain stands
+/// `rise` metres above its water: kValleyRunPerRise · rise, between half the radius and the
+/// radius. Shallow valleys stay narrow, deep ones get long sides instead of walls.
+inline double valleyReach(double radius, double rise) noexcept {
+  return std::clamp(kValleyRunPerRise * rise, 0.5 * radius, radius);
+}
+
+/// 1 / floor, or a huge number for floor 0 (every channel resolved), as evaluation computes it.
+inline double riverFloorInverse(double floor) noexcept {
+  return floor > 0.0 ? 1.0 / floor : 1e300;
+}
+
+/// Sample spacings in the half-width of the flat floor a river's section gets at a given
+/// sample spacing (riverFloor): 1.5 spacings across, so that a row of samples along any
+/// channel direction falls on the floor and descends with it (a channel narrower than the
+/// samples would otherwise be sampled at varying depths and read as a chain of pits).
+inline constexpr double kFloorPerSpacing = 0.75;
+
+/// The half-width, m, of the flat floor of a river of valley radius `radius` sampled every
+/// `spacing` metres (0: exact): kFloorPerSpacing · spacing, at most a quarter of the radius.
+/// The LOD rule for rivers: detail narrower than the samples fades into the floor.
+inline double riverFloor(double radius, double spacing) noexcept {
+  return std::min(kFloorPerSpacing * spacing, 0.25 * radius);
+}
+
+/// The profile δ(d) across a river, relative to its water surface, with floor half-width
+/// `floor` (riverFloor): the channel is a parabolic bed of the given depth for d < width/2
+/// (flatter where hasFlatBed()), scaled by how well the samples resolve it (0 up to a channel
+/// half-width of `floor`, whole from twice that), then flat water level out to the floor's
+/// edge max(width/2, floor), then banks rising with the type's bankSlope(). Evaluation
+/// repeats these operations in its vector kernels (core/construction
+/// evaluation_kernels.inc), tested against this definition.
+inline double riverProfile(RiverType type, double width, double depth, double d,
+                           double floor = 0.0) noexcept {
   const double half = 0.5 * width;
+  const double edge = std::max(half, floor);
   if (d < half) {
+    const double resolved = std::clamp(half * riverFloorInverse(floor) - 1.0, 0.0, 1.0);
     const double t2 = (d / half) * (d / half);
-    return -depth * (1.0 - (hasFlatBed(type) ? t2 * t2 : t2));
+    return -depth * resolved * (1.0 - (hasFlatBed(type) ? t2 * t2 : t2));
   }
-  return bankSlope(type) * (d - half);
+  return d < edge ? 0.0 : bankSlope(type) * (d - edge);
+}
+
+/// The weight of a river's sample d metres from its curve: falloff (1 − e²/(r − f)²)² of the
+/// distance e = max(d − f, 0) beyond the floor's edge f = max(width/2, floor), so the floor
+/// keeps weight 1 (no other relief mixes into it) and the support still ends at the radius.
+inline double riverWeight(double width, double radius, double d, double floor = 0.0) noexcept {
+  const double edge = std::max(0.5 * width, floor);
+  const double e = std::max(d - edge, 0.0);
+  return falloff(e * e, (radius - edge) * (radius - edge));
 }
 
 /// One river primitive per edge (node → parent), in node order (mouths have none), built

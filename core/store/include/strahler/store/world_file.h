@@ -22,7 +22,7 @@ namespace strahler::store {
 // in packed columns, so a world costs a few hundred bytes per km² and reads back bit for bit.
 
 /// Version of the file layout and payload schema this strahler writes and reads.
-inline constexpr std::uint32_t kWorldFormatVersion = 1;
+inline constexpr std::uint32_t kWorldFormatVersion = 2;
 /// Bytes before the payload: magic, version, payload length.
 inline constexpr std::size_t kWorldHeaderBytes = 26;
 /// Bytes after the payload: the CRC-32.
