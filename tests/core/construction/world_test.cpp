@@ -133,7 +133,9 @@ Sample referenceRivers(const World& world, Vec2 p, double spacing, double terrai
     const double depth = r.depthUp + (r.depthDown - r.depthUp) * along;
     const double floor = primitives::riverFloor(r.radius, spacing);
     const double reach = primitives::valleyReach(r.radius, terrain - elevation);
-    const double w = nearest < reach ? primitives::riverWeight(width, reach, nearest, floor) : 0.0;
+    const double fade = primitives::riverFade(r.radius, spacing);
+    const double w =
+        nearest < reach ? primitives::riverWeight(width, reach, nearest, floor, fade) : 0.0;
     if (w <= 0.0)
       continue;
     const Sample s{elevation + primitives::riverProfile(r.type, width, depth, nearest, floor), w};
@@ -302,14 +304,31 @@ TEST(World, CoarserSpacingOnlyFadesShortOctavesAndWidensFloors) {
   for (int i = 0; i < 400; ++i) {
     const Vec2 p = box.min + Vec2{box.size().x * (i + 0.5) / 400, box.size().y * 0.5};
     const World::Evaluation fine = world.evaluate(p, 1.0);
-    const World::Evaluation coarse = world.evaluate(p, 500.0);
-    // Same primitives: only the noise and the rivers' floors (primitives::riverFloor) differ...
+    const World::Evaluation coarse = world.evaluate(p, 60.0);
+    // Same primitives: only the noise and the rivers' floors (primitives::riverFloor) differ
+    // (every river's radius spans four 60 m samples: none fades)...
     ASSERT_EQ(fine.terrain.w, coarse.terrain.w);
     worst = std::max(worst, std::abs(fine.height - coarse.height));
   }
   // ... by at most the amplitude of the octaves under 2 km (a few tens of metres).
   EXPECT_LT(worst, 60.0);
   EXPECT_GT(worst, 0.0);
+}
+
+TEST(World, RiversNarrowerThanTheSamplesFade) {
+  const World& world = defaultWorld();
+  int onFloor = 0, faded = 0, rivers = 0;
+  for (const primitives::RiverPrimitive& r : world.data().rivers) {
+    const Vec2 middle = r.curve[r.curve.size() / 2].position;
+    ++rivers;
+    // Whole at fine spacing: its floor has weight 1.
+    onFloor += world.evaluate(middle, 1.0).rivers.w == 1.0;
+    // Gone where its radius spans two samples (primitives::riverFade): other rivers may still
+    // reach the point, but not with the weight of a floor.
+    faded += world.evaluate(middle, r.radius / 2.0).rivers.w < 1.0;
+  }
+  EXPECT_EQ(onFloor, rivers);
+  EXPECT_GT(faded, rivers * 9 / 10) << faded << " of " << rivers;
 }
 
 TEST(World, GenerationIsDeterministic) {

@@ -46,6 +46,19 @@ inline double valleyReach(double radius, double rise) noexcept {
   return std::clamp(kValleyRunPerRise * rise, 0.5 * radius, radius);
 }
 
+/// Sample spacings a river's radius spans where it starts to fade out (riverFade).
+inline constexpr double kRiverFadeSpacings = 2.0;
+
+/// The LOD fade of a river of valley radius `radius` sampled every `spacing` metres (0:
+/// exact), which scales its weight: 0 while the radius spans at most kRiverFadeSpacings
+/// samples (a valley a few samples wide, as an octave of noise fades below two samples per
+/// wavelength), 1 from twice that. Evaluation skips rivers whose fade is 0.
+inline double riverFade(double radius, double spacing) noexcept {
+  if (spacing <= 0.0)
+    return 1.0;
+  return std::clamp(radius / (kRiverFadeSpacings * spacing) - 1.0, 0.0, 1.0);
+}
+
 /// 1 / floor, or a huge number for floor 0 (every channel resolved), as evaluation computes it.
 inline double riverFloorInverse(double floor) noexcept {
   return floor > 0.0 ? 1.0 / floor : 1e300;
@@ -84,12 +97,14 @@ inline double riverProfile(RiverType type, double width, double depth, double d,
 }
 
 /// The weight of a river's sample d metres from its curve: falloff (1 − e²/(r − f)²)² of the
-/// distance e = max(d − f, 0) beyond the floor's edge f = max(width/2, floor), so the floor
-/// keeps weight 1 (no other relief mixes into it) and the support still ends at the radius.
-inline double riverWeight(double width, double radius, double d, double floor = 0.0) noexcept {
+/// distance e = max(d − f, 0) beyond the floor's edge f = max(width/2, floor), times the LOD
+/// fade (riverFade), so the floor keeps weight `fade` (1 where the river is whole: no other
+/// relief mixes into it) and the support still ends at the radius.
+inline double riverWeight(double width, double radius, double d, double floor = 0.0,
+                          double fade = 1.0) noexcept {
   const double edge = std::max(0.5 * width, floor);
   const double e = std::max(d - edge, 0.0);
-  return falloff(e * e, (radius - edge) * (radius - edge));
+  return falloff(e * e, (radius - edge) * (radius - edge)) * fade;
 }
 
 /// One river primitive per edge (node → parent), in node order (mouths have none), built
