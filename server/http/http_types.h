@@ -15,6 +15,9 @@ struct Request {
   bool head = false;  ///< True when the client sent HEAD: the server drops the body.
   std::string target; ///< Raw request target, e.g. "/worlds/default/tiles/3/4/2.png?size=512".
   std::vector<std::pair<std::string, std::string>> headers; ///< Lower-cased names.
+  /// The address the client connected to, as a URL authority ("127.0.0.1:8080",
+  /// "[::1]:8080"): the socket's own local endpoint, never taken from the request.
+  std::string localAddress;
 
   /// Value of header `name` (lower-case), or empty.
   std::string header(const std::string& name) const {

@@ -180,7 +180,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"generate -o out.txt", 1, "use a .world"},
         BadRun{"generate --frobnicate", 2, "unknown option '--frobnicate'"},
         BadRun{"generate --coast", 2, "needs a value"},
-        BadRun{"transmogrify", 2, "unknown command 'transmogrify'"}),
+        BadRun{"transmogrify", 2, "unknown command 'transmogrify'"},
+        BadRun{"serve --public-url ftp://example.org", 2,
+               "--public-url 'ftp://example.org': scheme must be http or https, not 'ftp'"},
+        BadRun{"serve --public-url http://example.org:99999", 2,
+               "--public-url 'http://example.org:99999': port must be a number in 1..65535"}),
     [](const ::testing::TestParamInfo<BadRun>& param) {
       return "case" + std::to_string(param.index);
     });
@@ -415,6 +419,17 @@ TEST(ServeCommand, ServesTilesAndStopsCleanlyOnSigterm) {
     return code;
   };
   EXPECT_EQ(status("/health"), "200");
+  // TileJSON names the address the client connected to, not its Host header.
+  FILE* tileJson =
+      popen(("curl -s -H 'Host: evil.example' http://127.0.0.1:" + std::to_string(port) +
+             "/worlds/default/tilejson.json")
+                .c_str(),
+            "r");
+  const auto tiles = nlohmann::json::parse(readLine(tileJson), nullptr, false);
+  pclose(tileJson);
+  EXPECT_EQ(tiles.is_object() ? tiles["tiles"] : nlohmann::json(),
+            nlohmann::json::array({"http://127.0.0.1:" + std::to_string(port) +
+                                   "/worlds/default/tiles/{z}/{x}/{y}.png"}));
   EXPECT_EQ(status("/worlds/default/tiles/10/434/373.png"), "200");
   EXPECT_EQ(status("/worlds/default/tiles/40/0/0.png"), "404");
   const auto start = std::chrono::steady_clock::now();
