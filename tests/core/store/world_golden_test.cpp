@@ -50,12 +50,25 @@ WorldData makeTinyWorld() {
   river.node = NodeId(1);
   w.rivers = {river};
   w.blocks = {{0, 1, 0, 0}, {1, 2, 0, 1}, {2, 3, 1, 1}};
-  w.stageSeconds = {{"total", 0.5}};
+  w.stageSeconds = {{"total", 0.5}}; // not stored
   return w;
 }
 
 /// `protoc --decode=strahler.v1.World proto/strahler/v1/world.proto` shows it as text.
 constexpr std::string_view kGoldenPayloadHex =
+    "08011205312e322e331a20303031313232333334343535363637373838393961616262636364646565666622"
+    "0474696e7931000000000000214039000000000020454042160a01011201031a070080f702bdbb0122050000"
+    "c8b8024a56090000000000408f4012030001021a07c0bb01bf3ec03e220500b06db26d2a0500c413a21f3203"
+    "0604023a0304020242068827d00fc4134a030300015201005a0800000000000000006208000000000000f03f"
+    "6a0100520a0a0301010112030001005a300a0780af01ff31807d1205c025c057001a0680329d06a1062206d0"
+    "0fa22f86172a06cc08940ac00c320680088002ff0462320a01031206807da01fa01f1a06b06def2ebf3e2206"
+    "c413930aaf092a01403201283a0296014201644a02e0125201005a0100";
+
+/// The same world as written until stage times were left out of world files (they kept two
+/// generations of the same inputs from being the same bytes): the golden payload followed by
+/// stage_times {stage: "total", seconds: 0.5}. Readers still accept it, so the format version
+/// stayed 1: no file is misread either way.
+constexpr std::string_view kPayloadWithStageTimesHex =
     "08011205312e322e331a20303031313232333334343535363637373838393961616262636364646565666622"
     "0474696e7931000000000000214039000000000020454042160a01011201031a070080f702bdbb0122050000"
     "c8b8024a56090000000000408f4012030001021a07c0bb01bf3ec03e220500b06db26d2a0500c413a21f3203"
@@ -102,6 +115,30 @@ TEST(WorldGolden, Version1PayloadReadsBackTheSameWorld) {
   auto decoded = decodeWorld(detail::frame(payload, 1), "golden");
   ASSERT_TRUE(decoded.ok()) << decoded.error().message;
   EXPECT_TRUE(testing::worldsEqual(decoded.value(), tiny));
+}
+
+TEST(WorldGolden, PayloadsWithStageTimesStillReadBack) {
+  const WorldData tiny = makeTinyWorld();
+  v1::World message;
+  ASSERT_TRUE(message.ParseFromString(fromHex(kPayloadWithStageTimesHex)));
+  message.set_params_json(input::canonicalJson(tiny.params));
+  std::string payload;
+  ASSERT_TRUE(message.SerializeToString(&payload));
+  auto decoded = decodeWorld(detail::frame(payload, 1), "older");
+  ASSERT_TRUE(decoded.ok()) << decoded.error().message;
+  EXPECT_TRUE(testing::worldsEqual(decoded.value(), tiny));
+  ASSERT_EQ(decoded.value().stageSeconds.size(), 1u);
+  EXPECT_EQ(decoded.value().stageSeconds[0].stage, "total");
+  EXPECT_EQ(decoded.value().stageSeconds[0].seconds, 0.5);
+}
+
+TEST(WorldGolden, TimingsDoNotChangeTheBytes) {
+  WorldData a = makeTinyWorld(), b = makeTinyWorld();
+  a.stageSeconds = {{"network", 1.25}, {"blocks", 0.5}};
+  b.stageSeconds = {{"network", 3.0}};
+  EXPECT_EQ(encodeWorld(a), encodeWorld(b));
+  a.stageSeconds.clear();
+  EXPECT_EQ(encodeWorld(a), encodeWorld(b));
 }
 
 } // namespace

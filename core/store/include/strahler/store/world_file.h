@@ -31,14 +31,16 @@ inline constexpr std::size_t kWorldTrailerBytes = 4;
 /// larger files are refused as corrupt before they are read.
 inline constexpr std::uint64_t kMaxWorldFileBytes = std::uint64_t{1} << 30;
 
-/// The complete file bytes of `world`. Deterministic: equal worlds give equal bytes.
+/// The complete file bytes of `world`. Deterministic: equal worlds give equal bytes, whatever
+/// their stageSeconds (timings are not stored, so fresh generations of the same inputs match).
 /// Asserts the WorldData invariants (values on their quantum grid, parents before children,
 /// one block per node with contiguous primitive ranges, curves of ≥ 2 points, ...).
 std::string encodeWorld(const construction::WorldData& world);
 
 /// Parses and fully validates world file bytes; any fault is kCorrupt with a message naming
 /// `nameForErrors` and the fault (never a crash, never an allocation beyond a small multiple
-/// of bytes.size()). decodeWorld(encodeWorld(w)) == w exactly.
+/// of bytes.size()). decodeWorld(encodeWorld(w)) == w exactly, stageSeconds aside (empty, or
+/// the timings a file from before they were left out still holds).
 base::Result<construction::WorldData> decodeWorld(std::string_view bytes,
                                                   std::string_view nameForErrors);
 
