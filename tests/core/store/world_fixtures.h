@@ -16,7 +16,8 @@
 namespace strahler::store::testing {
 
 /// A small world: 2 polygons (one with a lake), 2 trees of 12 nodes, a few primitives per
-/// block (some blocks empty), one river primitive without a node, stage times (which files do not store).
+/// block (some blocks empty), one river primitive without a node, stage times (which files do not
+/// store).
 construction::WorldData makeSmallWorld(std::uint64_t seed = 1);
 
 /// A world of realistic density over `areaKm2` of land: one node per km², 10 terrain
