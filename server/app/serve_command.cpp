@@ -122,6 +122,11 @@ int runServe(const std::vector<std::string>& raw) {
   sigaddset(&stopSignals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stopSignals, nullptr);
 
+  // Temporaries of generations killed mid-write (kill -9, OOM, power loss) would stay forever.
+  const std::string cacheDir = args.get("--cache-dir").value_or(defaultCacheDir());
+  if (const std::size_t stale = store::removeStaleWorldTemporaries(cacheDir); stale > 0)
+    std::fprintf(stderr, "strahler: removed %zu stale temporary world file(s) from '%s'\n", stale,
+                 cacheDir.c_str());
   auto worlds = loadWorlds(args);
   if (!worlds)
     return fail(worlds.error());

@@ -8,13 +8,17 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <poll.h>
 #include <sstream>
 #include <string>
+#include <sys/inotify.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
+#include <vector>
 
 namespace {
 
@@ -426,6 +430,121 @@ std::string readLine(FILE* pipe) {
   while ((c = std::fgetc(pipe)) != EOF && c != '\n')
     line += static_cast<char>(c);
   return line;
+}
+
+/// Number of temporary world files ("*.world.tmp.*") in `dir`.
+int temporariesIn(const fs::path& dir) {
+  int n = 0;
+  for (const auto& entry : fs::directory_iterator(dir))
+    n += entry.path().filename().string().find(".world.tmp.") != std::string::npos;
+  return n;
+}
+
+/// Runs the real program with `args` and kills it (SIGKILL) the moment a temporary world file
+/// is created in `watched` (inotify). True when it died with that temporary still there; false
+/// when it finished first or renamed the file before the signal landed (bounded by 60 s).
+bool killWhenATemporaryAppears(const std::vector<std::string>& args, const fs::path& watched) {
+  const int watch = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+  if (watch < 0 || ::inotify_add_watch(watch, watched.c_str(), IN_CREATE) < 0)
+    return false;
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::vector<char*> argv{const_cast<char*>(STRAHLER_EXECUTABLE)};
+    for (const std::string& a : args)
+      argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    const int devNull = ::open("/dev/null", O_WRONLY);
+    ::dup2(devNull, 1);
+    ::dup2(devNull, 2);
+    ::execv(STRAHLER_EXECUTABLE, argv.data());
+    ::_exit(127);
+  }
+  std::string temporary;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (temporary.empty() && std::chrono::steady_clock::now() < deadline) {
+    pollfd p{watch, POLLIN, 0};
+    if (::poll(&p, 1, 20) > 0) {
+      alignas(inotify_event) char buffer[4096];
+      const ssize_t n = ::read(watch, buffer, sizeof buffer);
+      for (ssize_t at = 0; at < n;) {
+        const auto* event = reinterpret_cast<const inotify_event*>(buffer + at);
+        const std::string name = event->len > 0 ? event->name : "";
+        if (name.find(".world.tmp.") != std::string::npos) {
+          ::kill(pid, SIGKILL);
+          temporary = name;
+          break;
+        }
+        at += static_cast<ssize_t>(sizeof(inotify_event) + event->len);
+      }
+    } else if (::waitpid(pid, nullptr, WNOHANG) == pid) {
+      ::close(watch);
+      return false;
+    }
+  }
+  if (temporary.empty())
+    ::kill(pid, SIGKILL);
+  ::waitpid(pid, nullptr, 0);
+  ::close(watch);
+  return !temporary.empty() && fs::exists(watched / temporary);
+}
+
+TEST(GenerateCommand, TemporariesOfKilledWritesAreCleanedUp) {
+  const fs::path cache = scratchDir() / "kill-cache", cache2 = scratchDir() / "kill-cache2",
+                 out = scratchDir() / "kill-out";
+  for (const fs::path& dir : {cache, cache2, out}) {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  const std::string world = (out / "island.world").string();
+  auto generate = [&](const fs::path& cacheDir) {
+    return std::vector<std::string>{"generate",    "--quiet",         "--seed", "11",
+                                    "--cache-dir", cacheDir.string(), "-o",     world};
+  };
+  // Killed while writing the cached world, then (its cache complete) while writing -o.
+  bool killed = false;
+  for (int attempt = 0; attempt < 10 && !killed; ++attempt)
+    killed = killWhenATemporaryAppears(generate(cache), cache);
+  ASSERT_TRUE(killed) << "never caught the cache's temporary file";
+  killed = false;
+  for (int attempt = 0; attempt < 10 && !killed; ++attempt)
+    killed = killWhenATemporaryAppears(generate(cache2), out);
+  ASSERT_TRUE(killed) << "never caught the output's temporary file";
+  ASSERT_EQ(temporariesIn(cache), 1);
+  ASSERT_EQ(temporariesIn(out), 1);
+  // A temporary of a live process (this test) and a file that only looks similar stay.
+  const fs::path live = cache / ("other.world.tmp." + std::to_string(::getpid()) + ".0");
+  const fs::path foreign = cache / "notes.txt.tmp.1.2";
+  writeScratch("kill-cache/" + live.filename().string(), "x");
+  writeScratch("kill-cache/" + foreign.filename().string(), "x");
+
+  // The server cleans its cache directory when it starts.
+  const std::string command = "exec " + std::string(STRAHLER_EXECUTABLE) +
+                              " serve --quiet --port 0 --threads 1 --workers 1 --cache-dir " +
+                              cache.string() + " 2>&1 & echo $!";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  const pid_t server = static_cast<pid_t>(std::stol(readLine(pipe)));
+  std::string banner;
+  for (std::string line; (line = readLine(pipe)).find("serving") == std::string::npos;) {
+    banner += line + "\n";
+    if (line.empty() && std::feof(pipe))
+      break;
+  }
+  EXPECT_NE(banner.find("removed 1 stale temporary world file(s)"), std::string::npos) << banner;
+  EXPECT_EQ(temporariesIn(cache), 1); // the live one
+  EXPECT_TRUE(fs::exists(live));
+  EXPECT_TRUE(fs::exists(foreign));
+  ::kill(server, SIGTERM);
+  for (std::string line; !(line = readLine(pipe)).empty() || !std::feof(pipe);) {
+  }
+  pclose(pipe);
+
+  // The next write into the output directory cleans it.
+  const ProcessRun run =
+      strahler("generate --quiet --seed 11 --cache-dir " + cache2.string() + " -o " + world);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_EQ(temporariesIn(out), 0);
+  EXPECT_TRUE(fs::exists(world));
 }
 
 TEST(ServeCommand, ServesTilesAndStopsCleanlyOnSigterm) {

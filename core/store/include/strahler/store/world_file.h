@@ -3,6 +3,7 @@
 #include "strahler/base/result.h"
 #include "strahler/construction/world_data.h"
 
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -48,7 +49,19 @@ base::Result<construction::WorldData> decodeWorld(std::string_view bytes,
 /// fsynced and renamed over `path`, then the directory is fsynced. On failure the target is
 /// untouched, the temporary file removed, and the error is kIoError naming the path and cause
 /// (if only the final directory fsync fails, the new file is in place but not yet durable).
+/// First removes the stale temporaries of its directory (removeStaleWorldTemporaries), so a
+/// killed earlier write leaves nothing behind for long.
 base::Status writeWorldFile(const std::string& path, const construction::WorldData& world);
+
+/// A temporary world file ("<name>.world.tmp.<pid>.<n>") older than this is stale even when
+/// its PID names a live process (reused, or of another PID namespace sharing the directory):
+/// a write takes seconds.
+inline constexpr std::chrono::seconds kStaleTemporaryAge{3600};
+
+/// Removes from `dir` the temporaries that writeWorldFile leaves when its process is killed
+/// mid-write: those whose PID is no live process (other than this one) or older than
+/// kStaleTemporaryAge. Returns how many were removed (none when `dir` cannot be read).
+std::size_t removeStaleWorldTemporaries(const std::string& dir);
 
 /// Reads a world file: kNotFound when it does not exist, kIoError when it cannot be read,
 /// kCorrupt (see decodeWorld) when it is damaged, of another version, or over
