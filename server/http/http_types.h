@@ -39,7 +39,7 @@ struct Response {
   /// status and body size (e.g. kept with a cached tile), so nothing is formatted per request.
   std::shared_ptr<const std::string> preparedFields;
   std::string route = "other"; ///< Label for metrics ("tile", "tilejson", "health", ...).
-  bool close = false;          ///< Close the connection after this response.
+  bool close = false;          ///< Close the connection after this response (every 400 does).
 };
 
 /// Builds a JSON error response {"error": message} with `status`, Content-Type

@@ -304,7 +304,9 @@ void Session::answer(std::uint64_t sequence, Response response) {
   Exchange& exchange = queue_[static_cast<std::size_t>(index)];
   if (exchange.message)
     return;
-  if (response.close) {
+  // Every 400 closes, the handler's too (a malformed path or query): a client that sent one
+  // request we could not make sense of may have framed the next ones wrongly as well.
+  if (response.close || response.status == 400) {
     exchange.keepAlive = false;
     closing_ = true;
   }
