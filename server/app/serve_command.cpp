@@ -28,6 +28,8 @@ constexpr const char* kServeUsage =
     "Serves worlds over HTTP: the viewer at /, TileJSON, Web Mercator and local tiles in every\n"
     "format, rivers.geojson, /health and /metrics. Without a world it loads (or generates)\n"
     "the world of --coast, or of the default island. SIGINT/SIGTERM drain and stop it.\n"
+    "--cache-mb M (default 256) bounds the heap the tile cache holds; RSS stays within it plus\n"
+    "the world and a few tens of MB of working memory.\n"
     "--public-url URL (http[s]://host[:port][/prefix]) is the base of absolute URLs (TileJSON's\n"
     "tiles) behind a proxy; without it they use the address the client connected to, never\n"
     "the Host header.\n";

@@ -114,7 +114,7 @@ struct TileServer::ServedWorld {
 
 TileServer::TileServer(std::vector<std::pair<std::string, construction::WorldData>> worlds,
                        TileServerOptions options)
-    : options_(std::move(options)), cache_(options_.cacheBytes),
+    : options_(std::move(options)), cache_(options_.cacheBytes), trimmer_(options_.trimPeriod),
       pool_(options_.workers, options_.maxQueued) {
   for (auto& [id, data] : worlds) {
     auto w = std::make_unique<ServedWorld>();
@@ -355,6 +355,7 @@ void TileServer::tile(const ServedWorld& w, const std::vector<std::string>& s,
   const TileService* service = w.tiles.get();
   auto compute = [this, service, req, etag = tileEtag(w.cacheKey, key)]() {
     auto rendered = service->render(req);
+    trimmer_.noteActivity();
     if (!rendered)
       return service::TileCache::Outcome{
           nullptr, rendered.error().code == base::ErrorCode::kNotFound ? 404 : 500,
@@ -362,6 +363,7 @@ void TileServer::tile(const ServedWorld& w, const std::vector<std::string>& s,
     metrics_.recordTile(rendered.value().evaluateMs, rendered.value().encodeMs);
     auto t = std::make_shared<service::CachedTile>();
     t->bytes = std::move(rendered.value().bytes);
+    t->bytes.shrink_to_fit(); // the cache charges capacity: keep no encoder reservation
     t->mimeType = rendered.value().mimeType;
     t->etag = etag;
     t->evaluateMs = rendered.value().evaluateMs;
@@ -370,6 +372,7 @@ void TileServer::tile(const ServedWorld& w, const std::vector<std::string>& s,
     plain.headers = tileHeaders(*t);
     plain.sharedBody = std::shared_ptr<const std::string>(t, &t->bytes);
     t->httpFields = http::prepareFields(plain);
+    t->httpFields.shrink_to_fit();
     return service::TileCache::Outcome{std::move(t), 0, {}};
   };
   cache_.get(
