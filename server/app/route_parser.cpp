@@ -80,7 +80,10 @@ base::Result<ParsedTarget> parseTarget(const std::string& target) {
       STRAHLER_ASSIGN_OR_RETURN(
           std::string value,
           percentDecode(eq == std::string::npos ? "" : pair.substr(eq + 1), true));
-      out.query[std::move(key)] = std::move(value);
+      if (out.query.count(key))
+        return base::makeError(base::ErrorCode::kInvalidInput,
+                               "query parameter '" + key.substr(0, 64) + "' is given twice");
+      out.query.emplace(std::move(key), std::move(value));
     }
     begin = end + 1;
   }
@@ -100,6 +103,9 @@ base::Result<std::int64_t> parseDecimal(const std::string& text, int maxDigits) 
                              "'" + text.substr(0, 32) + "' is not a non-negative integer");
     v = v * 10 + (c - '0');
   }
+  if (text.size() > 1 && text[0] == '0')
+    return base::makeError(base::ErrorCode::kInvalidInput,
+                           "'" + text + "' has a leading zero (write " + std::to_string(v) + ")");
   return v;
 }
 

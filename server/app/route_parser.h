@@ -12,15 +12,16 @@ namespace strahler::app {
 /// A request target split into decoded path segments and query parameters.
 struct ParsedTarget {
   std::vector<std::string> segments;        ///< "/worlds/a/tiles" → {"worlds", "a", "tiles"}.
-  std::map<std::string, std::string> query; ///< Decoded; a repeated key keeps the last value.
+  std::map<std::string, std::string> query; ///< Decoded; each key at most once.
 };
 
 /// Splits and percent-decodes a request target. kInvalidInput (→ 400) for: not starting
 /// with '/', bad or NUL percent escapes, control characters, "." or ".." segments, empty
-/// segments inside the path.
+/// segments inside the path, a query parameter given twice.
 base::Result<ParsedTarget> parseTarget(const std::string& target);
 
-/// A decimal integer of at most `maxDigits` digits, no sign, no leading '+' (kInvalidInput).
+/// A decimal integer of at most `maxDigits` digits in its one canonical spelling: no sign, no
+/// leading zero ("0" itself is fine), else kInvalidInput.
 base::Result<std::int64_t> parseDecimal(const std::string& text, int maxDigits = 10);
 
 } // namespace strahler::app

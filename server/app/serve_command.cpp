@@ -3,6 +3,7 @@
 #include "cli_args.h"
 #include "command_support.h"
 #include "http_server.h"
+#include "public_url.h"
 #include "terminal_progress.h"
 #include "tile_server.h"
 #include "world_loader.h"
@@ -22,10 +23,16 @@ constexpr const char* kServeUsage =
     "usage: strahler serve [WORLD.world ...] [--coast FILE.geojson [--params FILE.json] [--seed "
     "N]]\n"
     "                      [--host 127.0.0.1] [--port 8080] [--threads N] [--workers N]\n"
-    "                      [--cache-mb M] [--cache-dir DIR] [--web-root DIR] [--quiet]\n"
+    "                      [--cache-mb M] [--cache-dir DIR] [--web-root DIR] [--public-url URL]\n"
+    "                      [--quiet]\n"
     "Serves worlds over HTTP: the viewer at /, TileJSON, Web Mercator and local tiles in every\n"
     "format, rivers.geojson, /health and /metrics. Without a world it loads (or generates)\n"
-    "the world of --coast, or of the default island. SIGINT/SIGTERM drain and stop it.\n";
+    "the world of --coast, or of the default island. SIGINT/SIGTERM drain and stop it.\n"
+    "--cache-mb M (default 256) bounds the heap the tile cache holds; RSS stays within it plus\n"
+    "the world and a few tens of MB of working memory.\n"
+    "--public-url URL (http[s]://host[:port][/prefix]) is the base of absolute URLs (TileJSON's\n"
+    "tiles) behind a proxy; without it they use the address the client connected to, never\n"
+    "the Host header.\n";
 
 /// A URL-safe world id from a name: [A-Za-z0-9_-], unique among `taken`.
 std::string worldId(const std::string& name, std::set<std::string>& taken) {
@@ -84,10 +91,11 @@ std::string findWebRoot(const CliArgs& args) {
 } // namespace
 
 int runServe(const std::vector<std::string>& raw) {
-  auto parsed = CliArgs::parse("serve", raw,
-                               {"--coast", "--params", "--seed", "--host", "--port", "--threads",
-                                "--workers", "--cache-mb", "--cache-dir", "--web-root"},
-                               {"--quiet", "--help", "-h"});
+  auto parsed =
+      CliArgs::parse("serve", raw,
+                     {"--coast", "--params", "--seed", "--host", "--port", "--threads", "--workers",
+                      "--cache-mb", "--cache-dir", "--web-root", "--public-url"},
+                     {"--quiet", "--help", "-h"});
   if (!parsed)
     return usageError(parsed.error(), kServeUsage);
   const CliArgs& args = parsed.value();
@@ -101,6 +109,13 @@ int runServe(const std::vector<std::string>& raw) {
   for (const auto* r : {&port, &threads, &workers, &cacheMb})
     if (!*r)
       return usageError(r->error(), kServeUsage);
+  std::string publicUrl;
+  if (const auto url = args.get("--public-url")) {
+    auto checked = parsePublicUrl(*url);
+    if (!checked)
+      return usageError(checked.error(), kServeUsage);
+    publicUrl = std::move(checked).value();
+  }
 
   // Block the stop signals in every thread; the main thread waits for them below.
   sigset_t stopSignals;
@@ -109,6 +124,11 @@ int runServe(const std::vector<std::string>& raw) {
   sigaddset(&stopSignals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stopSignals, nullptr);
 
+  // Temporaries of generations killed mid-write (kill -9, OOM, power loss) would stay forever.
+  const std::string cacheDir = args.get("--cache-dir").value_or(defaultCacheDir());
+  if (const std::size_t stale = store::removeStaleWorldTemporaries(cacheDir); stale > 0)
+    std::fprintf(stderr, "strahler: removed %zu stale temporary world file(s) from '%s'\n", stale,
+                 cacheDir.c_str());
   auto worlds = loadWorlds(args);
   if (!worlds)
     return fail(worlds.error());
@@ -116,6 +136,7 @@ int runServe(const std::vector<std::string>& raw) {
   options.workers = static_cast<int>(workers.value().value_or(cores));
   options.cacheBytes = static_cast<std::size_t>(cacheMb.value().value_or(256)) << 20;
   options.webRoot = findWebRoot(args);
+  options.publicUrl = publicUrl;
   TileServer tiles(std::move(worlds).value(), options);
 
   http::ServerOptions http;

@@ -1,12 +1,12 @@
 #include "tile_server.h"
 
 #include "route_parser.h"
+#include "tile_route.h"
 
 #include "strahler/render/rivers_geojson.h"
 
 #include <nlohmann/json.hpp>
 
-#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -69,18 +69,6 @@ http::Response jsonResponse(const json& body, const std::string& route) {
   return r;
 }
 
-/// The Host header if it looks like a host[:port], else "localhost".
-std::string safeHost(const http::Request& request) {
-  const std::string host = request.header("host");
-  if (host.empty() || host.size() > 255)
-    return "localhost";
-  for (char c : host)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == ':' || c == '-' ||
-          c == '[' || c == ']'))
-      return "localhost";
-  return host;
-}
-
 bool etagMatches(const std::string& ifNoneMatch, const std::string& etag) {
   if (ifNoneMatch.empty())
     return false;
@@ -126,7 +114,7 @@ struct TileServer::ServedWorld {
 
 TileServer::TileServer(std::vector<std::pair<std::string, construction::WorldData>> worlds,
                        TileServerOptions options)
-    : options_(std::move(options)), cache_(options_.cacheBytes),
+    : options_(std::move(options)), cache_(options_.cacheBytes), trimmer_(options_.trimPeriod),
       pool_(options_.workers, options_.maxQueued) {
   for (auto& [id, data] : worlds) {
     auto w = std::make_unique<ServedWorld>();
@@ -256,7 +244,11 @@ http::Response TileServer::worldList(const http::Request&) const {
 }
 
 http::Response TileServer::tileJson(const ServedWorld& w, const http::Request& request) const {
-  const std::string base = "http://" + safeHost(request) + "/worlds/" + w.id;
+  // Never the Host header: a client could point the tile URLs anywhere (TileJSON 3.0.0 wants
+  // absolute URLs, and MapLibre fetches relative ones from a worker, where they fail).
+  const std::string origin =
+      options_.publicUrl.empty() ? "http://" + request.localAddress : options_.publicUrl;
+  const std::string base = origin + "/worlds/" + w.id;
   const json tj = {{"tilejson", "3.0.0"},
                    {"name", w.id},
                    {"description", "strahler terrain (Terrain-RGB heightmap)"},
@@ -310,9 +302,7 @@ void TileServer::handle(const http::Request& request, std::function<void(http::R
       return done(std::move(r));
     }
     if (s.size() == 6 && (s[2] == "tiles" || s[2] == "local"))
-      return tile(*w,
-                  s[2] == "local" ? tiling::SchemeKind::kLocal : tiling::SchemeKind::kWebMercator,
-                  s, parsed.value().query, request, std::move(done));
+      return tile(*w, s, parsed.value().query, request, std::move(done));
     return done(http::errorResponse(404, "no such resource under /worlds/" + w->id));
   }
   done(staticFile(s));
@@ -336,60 +326,20 @@ http::Response TileServer::staticFile(const std::vector<std::string>& segments) 
   return http::errorResponse(404, "not found");
 }
 
-void TileServer::tile(const ServedWorld& w, tiling::SchemeKind scheme,
-                      const std::vector<std::string>& s,
+void TileServer::tile(const ServedWorld& w, const std::vector<std::string>& s,
                       const std::map<std::string, std::string>& query, const http::Request& request,
                       std::function<void(http::Response)> done) {
-  const std::string& last = s[5];
-  const std::size_t dot = last.find('.');
-  if (dot == std::string::npos)
-    return done(http::errorResponse(400, "tile name must be {y}.{format}"));
-  auto z = parseDecimal(s[3], 2), x = parseDecimal(s[4], 10),
-       y = parseDecimal(last.substr(0, dot), 10);
-  for (auto* v : {&z, &x, &y})
-    if (!*v)
-      return done(http::errorResponse(400, "tile coordinate " + v->error().message));
-  std::string formatName = last.substr(dot + 1);
-  if (const auto e = query.find("encoding"); e != query.end()) {
-    if (formatName != "png" || (e->second != "terrarium" && e->second != "mapbox"))
-      return done(
-          http::errorResponse(400, "encoding must be 'mapbox' or 'terrarium', for png tiles"));
-    if (e->second == "terrarium")
-      formatName = "terrarium";
-  }
-  auto format = parseTileFormat(formatName);
-  if (!format)
-    return done(http::errorResponse(400, format.error().message));
-  int size = 0;
-  if (const auto q = query.find("size"); q != query.end()) {
-    auto v = parseDecimal(q->second, 4);
-    if (!v)
-      return done(http::errorResponse(400, "size " + v.error().message));
-    size = static_cast<int>(v.value());
-    const bool mesh = isMeshFormat(format.value());
-    const int lo = mesh ? TileSizes::kMeshMin : TileSizes::kRasterMin;
-    const int hi = mesh ? TileSizes::kMeshMax : TileSizes::kRasterMax;
-    if (size < lo || size > hi)
-      return done(http::errorResponse(400, "size must be in [" + std::to_string(lo) + ", " +
-                                               std::to_string(hi) + "]"));
-  }
-  const TileRequest req{
-      scheme, {static_cast<int>(z.value()), x.value(), y.value()}, format.value(), size};
-  if (!w.tiles->scheme(scheme).contains(req.tile))
-    return done(http::errorResponse(404, "tile " + s[3] + "/" + s[4] + "/" + last.substr(0, dot) +
-                                             " is outside the grid (zoom 0.." +
-                                             std::to_string(w.tiles->scheme(scheme).maxZoom()) +
-                                             ")"));
-  const std::string_view yText = std::string_view(last).substr(0, dot);
-  std::string key;
-  key.reserve(w.id.size() + s[2].size() + s[3].size() + s[4].size() + yText.size() +
-              formatName.size() + 12);
-  for (std::string_view part :
-       {std::string_view(w.id), std::string_view(s[2]), std::string_view(s[3]),
-        std::string_view(s[4]), yText, std::string_view(formatName)})
-    key.append(part).push_back('|');
-  char sizeText[12];
-  key.append(sizeText, std::to_chars(sizeText, sizeText + sizeof sizeText, size).ptr);
+  auto route = parseTileRoute(w.id, s, query);
+  if (!route)
+    return done(http::errorResponse(400, route.error().message));
+  const TileRequest req = route.value().request;
+  const std::string& key = route.value().key;
+  const tiling::TileScheme& scheme = w.tiles->scheme(req.scheme);
+  if (!scheme.contains(req.tile))
+    return done(http::errorResponse(
+        404, "tile " + std::to_string(req.tile.z) + "/" + std::to_string(req.tile.x) + "/" +
+                 std::to_string(req.tile.y) + " is outside the grid (zoom 0.." +
+                 std::to_string(scheme.maxZoom()) + ")"));
   if (const std::string ifNoneMatch = request.header("if-none-match"); !ifNoneMatch.empty()) {
     const std::string etag = tileEtag(w.cacheKey, key);
     if (etagMatches(ifNoneMatch, etag)) {
@@ -405,6 +355,7 @@ void TileServer::tile(const ServedWorld& w, tiling::SchemeKind scheme,
   const TileService* service = w.tiles.get();
   auto compute = [this, service, req, etag = tileEtag(w.cacheKey, key)]() {
     auto rendered = service->render(req);
+    trimmer_.noteActivity();
     if (!rendered)
       return service::TileCache::Outcome{
           nullptr, rendered.error().code == base::ErrorCode::kNotFound ? 404 : 500,
@@ -412,6 +363,7 @@ void TileServer::tile(const ServedWorld& w, tiling::SchemeKind scheme,
     metrics_.recordTile(rendered.value().evaluateMs, rendered.value().encodeMs);
     auto t = std::make_shared<service::CachedTile>();
     t->bytes = std::move(rendered.value().bytes);
+    t->bytes.shrink_to_fit(); // the cache charges capacity: keep no encoder reservation
     t->mimeType = rendered.value().mimeType;
     t->etag = etag;
     t->evaluateMs = rendered.value().evaluateMs;
@@ -420,6 +372,7 @@ void TileServer::tile(const ServedWorld& w, tiling::SchemeKind scheme,
     plain.headers = tileHeaders(*t);
     plain.sharedBody = std::shared_ptr<const std::string>(t, &t->bytes);
     t->httpFields = http::prepareFields(plain);
+    t->httpFields.shrink_to_fit();
     return service::TileCache::Outcome{std::move(t), 0, {}};
   };
   cache_.get(

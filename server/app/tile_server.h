@@ -1,6 +1,7 @@
 #pragma once
 
 #include "http_types.h"
+#include "memory_trimmer.h"
 #include "metrics.h"
 #include "tile_cache.h"
 #include "tile_service.h"
@@ -8,6 +9,7 @@
 
 #include "strahler/construction/world_data.h"
 
+#include <chrono>
 #include <functional>
 #include <map>
 #include <memory>
@@ -22,6 +24,12 @@ struct TileServerOptions {
   std::size_t maxQueued = 256;         ///< Tile computations waiting before 503.
   std::size_t cacheBytes = 256u << 20; ///< Byte bound of the encoded-tile LRU.
   std::string webRoot;                 ///< Folder of the built viewer (index.html); "" if none.
+  /// How often freed heap memory is returned to the system after tiles were computed
+  /// (MemoryTrimmer); 0 never.
+  std::chrono::milliseconds trimPeriod{1000};
+  /// Origin and path prefix of absolute URLs (TileJSON's tiles), from parsePublicUrl(); "" to
+  /// use the address each client connected to. Never the Host header.
+  std::string publicUrl;
 };
 
 /// The endpoints of DESIGN.md's server contract over a set of worlds: /, /worlds,
@@ -57,8 +65,7 @@ private:
   http::Response staticFile(const std::vector<std::string>& segments) const;
   http::Response worldList(const http::Request& request) const;
   http::Response tileJson(const ServedWorld& world, const http::Request& request) const;
-  void tile(const ServedWorld& world, tiling::SchemeKind scheme,
-            const std::vector<std::string>& segments,
+  void tile(const ServedWorld& world, const std::vector<std::string>& segments,
             const std::map<std::string, std::string>& query, const http::Request& request,
             std::function<void(http::Response)> done);
   std::string gauges() const;
@@ -67,6 +74,7 @@ private:
   TileServerOptions options_;
   service::Metrics metrics_;
   service::TileCache cache_;
+  service::MemoryTrimmer trimmer_;
   service::WorkerPool pool_;
 };
 

@@ -35,8 +35,9 @@ struct ServerOptions {
 /// the handler's. Beast stays inside server/http.
 /// Decisions where HTTP leaves a choice: a well-formed "HTTP/x.y" other than 1.0 and 1.1 gets
 /// 505; lines ending in a bare LF get 400; the target must be origin-form ("/..."), so
-/// absolute-form and "*" get 400 on GET/HEAD; every 400 closes the connection, as do 431 and
-/// 505, while 405 and 414 keep it open unless a body was announced. The answer to HEAD never
+/// absolute-form and "*" get 400 on GET/HEAD; every 400 closes the connection (the handler's
+/// too, e.g. for a bad path), as do 431 and 505, while 405 and 414 keep it open unless a body
+/// was announced. The answer to HEAD never
 /// carries a body, not even an error's.
 class Server {
 public:

@@ -15,6 +15,9 @@ struct Request {
   bool head = false;  ///< True when the client sent HEAD: the server drops the body.
   std::string target; ///< Raw request target, e.g. "/worlds/default/tiles/3/4/2.png?size=512".
   std::vector<std::pair<std::string, std::string>> headers; ///< Lower-cased names.
+  /// The address the client connected to, as a URL authority ("127.0.0.1:8080",
+  /// "[::1]:8080"): the socket's own local endpoint, never taken from the request.
+  std::string localAddress;
 
   /// Value of header `name` (lower-case), or empty.
   std::string header(const std::string& name) const {
@@ -36,7 +39,7 @@ struct Response {
   /// status and body size (e.g. kept with a cached tile), so nothing is formatted per request.
   std::shared_ptr<const std::string> preparedFields;
   std::string route = "other"; ///< Label for metrics ("tile", "tilejson", "health", ...).
-  bool close = false;          ///< Close the connection after this response.
+  bool close = false;          ///< Close the connection after this response (every 400 does).
 };
 
 /// Builds a JSON error response {"error": message} with `status`, Content-Type

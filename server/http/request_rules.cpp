@@ -173,7 +173,7 @@ Verdict checkRequest(const RequestParser& parser, const ServerOptions& options) 
   if (!readOnly)
     return methodNotAllowed(toStd(header.method_string()), false);
   if (target.empty() || target.front() != '/')
-    return reject(400, "request target must be a path starting with '/'", false);
+    return reject(400, "request target must be a path starting with '/'", true);
   return Verdict{};
 }
 

@@ -24,7 +24,8 @@ struct Verdict {
 /// longer than maxTargetBytes → 414; Transfer-Encoding other than one "chunked" → 400; any body
 /// (Content-Length > 0 or chunked) → 400 on GET/HEAD/OPTIONS, 405 otherwise, both closing;
 /// HTTP/1.1 without exactly one Host → 400; OPTIONS → preflight; GET/HEAD with a target that is
-/// not origin-form ("/...") → 400; any other method (case-sensitive) → 405 with Allow.
+/// not origin-form ("/...") → 400, closing like every 400; any other method (case-sensitive)
+/// → 405 with Allow.
 Verdict checkRequest(const RequestParser& parser, const ServerOptions& options);
 
 /// The answer to a header that `parser` rejected with `ec`, always closing. `received` holds the

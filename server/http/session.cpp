@@ -41,8 +41,10 @@ bool isParseError(const ErrorCode& ec) {
          ec != bhttp::error::partial_message;
 }
 
-Request makeRequest(const bhttp::request_header<>& header, bool head) {
+Request makeRequest(const bhttp::request_header<>& header, bool head,
+                    const std::string& localAddress) {
   Request request;
+  request.localAddress = localAddress;
   request.method = "GET";
   request.head = head;
   request.target = std::string(header.target());
@@ -54,6 +56,22 @@ Request makeRequest(const bhttp::request_header<>& header, bool head) {
     request.headers.emplace_back(std::move(name), std::string(field.value()));
   }
   return request;
+}
+
+/// `endpoint` as a URL authority: "a.b.c.d:port" (IPv4-mapped IPv6 too) or "[v6]:port".
+std::string urlAuthority(const tcp::endpoint& endpoint) {
+  const net::ip::address address = endpoint.address();
+  std::string host;
+  if (address.is_v6() && address.to_v6().is_v4_mapped()) {
+    host = net::ip::make_address_v4(net::ip::v4_mapped, address.to_v6()).to_string();
+  } else if (address.is_v6()) {
+    net::ip::address_v6 v6 = address.to_v6();
+    v6.scope_id(0); // a zone id is local to this host: of no use in a URL
+    host = "[" + v6.to_string() + "]";
+  } else {
+    host = address.to_string();
+  }
+  return host + ":" + std::to_string(endpoint.port());
 }
 
 } // namespace
@@ -70,6 +88,7 @@ void Session::start() {
   ErrorCode ignored;
   // Responses are written whole (one gather write each); Nagle would only delay pipelined ones.
   socket_.set_option(tcp::no_delay(true), ignored);
+  localAddress_ = urlAuthority(socket_.local_endpoint(ignored));
   state_->add(shared_from_this());
   net::dispatch(executor_, [self = shared_from_this()] { self->doRead(); });
 }
@@ -211,7 +230,7 @@ void Session::dispatch() {
   if (!exchange.keepAlive)
     closing_ = true;
   if (verdict.kind == Verdict::Kind::kForward)
-    return callHandler(exchange.sequence, makeRequest(header, head));
+    return callHandler(exchange.sequence, makeRequest(header, head, localAddress_));
   answer(exchange.sequence, std::move(verdict.response));
 }
 
@@ -285,7 +304,9 @@ void Session::answer(std::uint64_t sequence, Response response) {
   Exchange& exchange = queue_[static_cast<std::size_t>(index)];
   if (exchange.message)
     return;
-  if (response.close) {
+  // Every 400 closes, the handler's too (a malformed path or query): a client that sent one
+  // request we could not make sense of may have framed the next ones wrongly as well.
+  if (response.close || response.status == 400) {
     exchange.keepAlive = false;
     closing_ = true;
   }

@@ -118,6 +118,7 @@ private:
   beast::flat_buffer buffer_;
   boost::optional<RequestParser> parser_;
   std::deque<Exchange> queue_; ///< Requests whose responses are owed, in order.
+  std::string localAddress_;   ///< Request::localAddress of every request on this connection.
   std::string head_;           ///< Header block of the response being written.
   std::uint64_t nextSequence_ = 0;
   std::size_t discarded_ = 0; ///< Bytes thrown away while lingering.

@@ -1,5 +1,6 @@
 #include "tile_cache.h"
 
+#include <algorithm>
 #include <atomic>
 #include <exception>
 #include <list>
@@ -16,13 +17,16 @@ namespace {
 using Outcome = TileCache::Outcome;
 using Callback = TileCache::Callback;
 
-/// Bookkeeping bytes charged per entry on top of its strings (list node, index slot, control
-/// block): a rough figure, so that many tiny tiles still count against the bound.
-constexpr std::size_t kEntryOverheadBytes = 64;
+/// Heap bytes of one allocation of `n` bytes under glibc malloc: n plus its 8-byte header,
+/// rounded up to 16, at least 32.
+constexpr std::size_t mallocChunk(std::size_t n) {
+  return std::max<std::size_t>(32, (n + 8 + 15) / 16 * 16);
+}
 
-std::size_t entryBytes(const std::string& key, const CachedTile& tile) {
-  return key.size() + tile.bytes.size() + tile.mimeType.size() + tile.etag.size() +
-         tile.httpFields.size() + kEntryOverheadBytes;
+/// Heap bytes behind a string: its capacity (not its size: a buffer reserved larger and never
+/// shrunk holds all of it), none when the characters sit inside the object (short strings).
+std::size_t heapBytes(const std::string& text) noexcept {
+  return text.capacity() > std::string().capacity() ? mallocChunk(text.capacity() + 1) : 0;
 }
 
 /// The requests waiting for one computation. Its identity tells a finishing computation
@@ -125,7 +129,7 @@ struct CacheCore {
   /// Under the lock: caches `tile` as the most recently used, then evicts down to the bound.
   /// A tile larger than the whole cache is not kept.
   void insert(const std::string& key, std::shared_ptr<const CachedTile> tile) {
-    const std::size_t bytes = entryBytes(key, *tile);
+    const std::size_t bytes = TileCache::chargedBytes(key, *tile);
     if (bytes > maxBytes) {
       return;
     }
@@ -240,6 +244,21 @@ void startFlight(const std::shared_ptr<CacheCore>& core, const std::string& key,
 struct TileCache::Impl {
   std::shared_ptr<CacheCore> core;
 };
+
+std::size_t TileCache::entryOverheadBytes() noexcept {
+  // The tile and its shared_ptr control block (one make_shared allocation), the LRU list node,
+  // the index node (next, key, iterator, cached hash) and its bucket slot.
+  constexpr std::size_t kSharedControlBlock = 16, kListLinks = 2 * sizeof(void*);
+  constexpr std::size_t kIndexNode =
+      sizeof(void*) + sizeof(std::string_view) + sizeof(void*) + sizeof(std::size_t);
+  return mallocChunk(sizeof(CachedTile) + kSharedControlBlock) +
+         mallocChunk(sizeof(Entry) + kListLinks) + mallocChunk(kIndexNode) + sizeof(void*);
+}
+
+std::size_t TileCache::chargedBytes(const std::string& key, const CachedTile& tile) noexcept {
+  return heapBytes(key) + heapBytes(tile.bytes) + heapBytes(tile.mimeType) + heapBytes(tile.etag) +
+         heapBytes(tile.httpFields) + entryOverheadBytes();
+}
 
 TileCache::TileCache(std::size_t maxBytes)
     : impl_(std::make_unique<Impl>(Impl{std::make_shared<CacheCore>(maxBytes)})) {}

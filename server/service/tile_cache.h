@@ -26,7 +26,9 @@ struct TileCacheStats {
   std::size_t hits = 0;
   std::size_t misses = 0;
   std::size_t evictions = 0;
-  std::size_t bytes = 0; ///< Bytes held now (key and every string of the tile, + 64 per entry).
+  /// Heap bytes held now: every string's capacity (key and tile) and each entry's bookkeeping
+  /// (tile object, list and index nodes), as glibc malloc allocates them.
+  std::size_t bytes = 0;
   std::size_t entries = 0;
   std::size_t inFlight = 0;     ///< Distinct tiles being computed now.
   std::size_t coalesced = 0;    ///< Requests that waited for another request's computation.
@@ -53,7 +55,8 @@ public:
   /// Work destroyed without being run (e.g. by WorkerPool's destructor) answers 503.
   using Schedule = std::function<bool(std::function<void()> work)>;
 
-  /// A cache holding at most `maxBytes` bytes (0: nothing is kept, single flight still works).
+  /// A cache holding at most `maxBytes` heap bytes (TileCacheStats::bytes; 0: nothing is kept,
+  /// single flight still works). Store exactly-sized strings: capacity is what is charged.
   explicit TileCache(std::size_t maxBytes);
   ~TileCache();
 
@@ -74,6 +77,12 @@ public:
 
   /// Current counters.
   TileCacheStats stats() const;
+  /// Heap bytes an entry of `key` and `tile` is charged: each string's capacity (none for
+  /// short strings kept inside the object) as glibc malloc allocates it, plus
+  /// entryOverheadBytes(). Capacity, not size: a reserved, never-shrunk buffer is held whole.
+  static std::size_t chargedBytes(const std::string& key, const CachedTile& tile) noexcept;
+  /// The fixed part of chargedBytes(): tile object, control block, list and index nodes.
+  static std::size_t entryOverheadBytes() noexcept;
   /// The byte bound.
   std::size_t maxBytes() const noexcept;
 

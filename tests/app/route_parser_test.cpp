@@ -17,6 +17,14 @@ TEST(RouteParser, SplitsAndDecodesPathAndQuery) {
   EXPECT_EQ(parseTarget("/worlds/").value().segments.size(), 1u);
 }
 
+TEST(RouteParser, RefusesAQueryParameterGivenTwice) {
+  const auto t = parseTarget("/a?size=256&x=1&size=512");
+  ASSERT_FALSE(t.ok());
+  EXPECT_EQ(t.error().message, "query parameter 'size' is given twice");
+  EXPECT_FALSE(parseTarget("/a?k&k").ok());
+  EXPECT_TRUE(parseTarget("/a?k=1&&j=1&").ok());
+}
+
 TEST(RouteParser, RejectsMalformedTargets) {
   for (const char* bad : {"worlds", "/a/../b", "/a/./b", "/%2e%2e/x", "/a%zz", "/a%4", "/a%00b",
                           "/a//b", "/a%2Fb", "/a\x01", "/x?k=%ZZ"}) {
@@ -29,7 +37,9 @@ TEST(RouteParser, RejectsMalformedTargets) {
 TEST(RouteParser, ParsesBoundedDecimals) {
   EXPECT_EQ(parseDecimal("0").value(), 0);
   EXPECT_EQ(parseDecimal("1234567890").value(), 1234567890);
-  for (const char* bad : {"", "-1", "+1", "1.5", "1e3", "12345678901", " 1", "0x10"}) {
+  EXPECT_EQ(parseDecimal("013880").error().message, "'013880' has a leading zero (write 13880)");
+  for (const char* bad :
+       {"", "-1", "+1", "1.5", "1e3", "12345678901", " 1", "0x10", "00", "01", "0007"}) {
     EXPECT_FALSE(parseDecimal(bad).ok()) << bad;
   }
 }

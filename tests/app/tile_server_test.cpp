@@ -13,6 +13,7 @@
 #include <atomic>
 #include <chrono>
 #include <map>
+#include <set>
 #include <thread>
 
 namespace strahler::app {
@@ -46,11 +47,11 @@ HttpResponse request(std::uint16_t port, const std::string& target,
 struct Running {
   TileServer tiles;
   http::Server server;
-  explicit Running(std::size_t cacheBytes = 64u << 20, int workers = 2)
+  explicit Running(std::size_t cacheBytes = 64u << 20, std::string publicUrl = "")
       : tiles(
             {{"island", construction::generateWorldData(strahler::testing::defaultIslandSpec(), "k")
                             .value()}},
-            TileServerOptions{workers, 256, cacheBytes, ""}),
+            serverOptions(cacheBytes, std::move(publicUrl))),
         server(
             options(),
             [this](const http::Request& r, std::function<void(http::Response)> done) {
@@ -60,6 +61,13 @@ struct Running {
               tiles.observe(route, status, bytes, ms);
             }) {
     EXPECT_TRUE(server.start().ok());
+  }
+  static TileServerOptions serverOptions(std::size_t cacheBytes, std::string publicUrl) {
+    TileServerOptions o;
+    o.workers = 2;
+    o.cacheBytes = cacheBytes;
+    o.publicUrl = std::move(publicUrl);
+    return o;
   }
   static http::ServerOptions options() {
     http::ServerOptions o;
@@ -120,6 +128,32 @@ TEST(TileServer, TileJsonIsAMapLibreRasterDemSource) {
   EXPECT_EQ(tj["center"].size(), 3u);
 }
 
+/// The "tiles" URLs of the TileJSON fetched with `host` as the Host header.
+std::vector<std::string> tileJsonUrls(std::uint16_t port, const std::string& host) {
+  const auto r = http::test::fetch(port,
+                                   "GET /worlds/island/tilejson.json HTTP/1.1\r\nHost: " + host +
+                                       "\r\nConnection: close\r\n\r\n",
+                                   std::chrono::seconds(20));
+  EXPECT_TRUE(r && r->status == 200);
+  return r ? nlohmann::json::parse(r->body)["tiles"].get<std::vector<std::string>>()
+           : std::vector<std::string>{};
+}
+
+TEST(TileServer, TileJsonNeverCopiesTheHostHeader) {
+  const std::string here = "http://127.0.0.1:";
+  {
+    Running s;
+    const std::string expected =
+        here + std::to_string(s.port()) + "/worlds/island/tiles/{z}/{x}/{y}.png";
+    for (const char* host : {"evil.example", "evil.example:80", "127.0.0.1:1", "[::1]:8080"})
+      EXPECT_EQ(tileJsonUrls(s.port(), host), std::vector<std::string>{expected}) << host;
+  }
+  Running s(64u << 20, "https://tiles.example.org/terrain");
+  EXPECT_EQ(tileJsonUrls(s.port(), "evil.example"),
+            std::vector<std::string>{
+                "https://tiles.example.org/terrain/worlds/island/tiles/{z}/{x}/{y}.png"});
+}
+
 TEST(TileServer, BadRequestsGetTheirStatusAndTheServerStaysHealthy) {
   Running s;
   const std::pair<std::string, int> cases[] = {
@@ -152,7 +186,7 @@ TEST(TileServer, BadRequestsGetTheirStatusAndTheServerStaysHealthy) {
       {"/worlds/island/tiles/1.5/1/0.png", 400},
       {"/worlds/island/local/0/0/1.png", 404},
       {"/worlds/island/tiles/3/1/0.png?size=", 400},
-      {"/worlds/island/tiles/03/1/0.png", 200},
+      {"/worlds/island/tiles/03/1/0.png", 400},
       {"/worlds/island/local/100/0/0.png", 400}};
   for (const auto& [target, status] : cases) {
     auto r = request(s.port(), target);
@@ -168,6 +202,58 @@ TEST(TileServer, BadRequestsGetTheirStatusAndTheServerStaysHealthy) {
     EXPECT_EQ(r.status, 405) << method;
     EXPECT_NE(r.headers["allow"].find("GET"), std::string::npos);
   }
+}
+
+TEST(TileServer, EverySpellingOfATileHasOneCacheEntryAndOneEtag) {
+  Running s;
+  const std::string web = "/worlds/island/tiles/10/433/373";
+  const std::string local = "/worlds/island/local/2/1/2";
+  // Each group names one tile in every accepted spelling.
+  const std::vector<std::vector<std::string>> groups = {
+      {web + ".png", web + ".png?size=256", web + ".png?encoding=mapbox",
+       web + ".png?size=256&encoding=mapbox", web + ".png?encoding=mapbox&size=256", web + ".png?",
+       web + ".png?&", "/worlds/island/tiles/%31%30/433/373.png"},
+      {web + ".terrarium", web + ".png?encoding=terrarium", web + ".terrarium?size=256"},
+      {web + ".tif", web + ".tiff", web + ".tiff?size=256"},
+      {local + ".glb", local + ".glb?size=64"},
+      {web + ".png?size=512"}};
+  std::set<std::string> etags;
+  for (const auto& group : groups) {
+    const auto first = request(s.port(), group[0]);
+    ASSERT_EQ(first.status, 200) << group[0] << " " << first.body;
+    const std::string etag = first.headers.at("etag");
+    EXPECT_TRUE(etags.insert(etag).second) << group[0] << " shares an ETag with another tile";
+    for (const std::string& spelling : group) {
+      const auto r = request(s.port(), spelling);
+      ASSERT_EQ(r.status, 200) << spelling << " " << r.body;
+      EXPECT_EQ(r.headers.at("etag"), etag) << spelling;
+      EXPECT_EQ(r.body, first.body) << spelling;
+      EXPECT_EQ(request(s.port(), spelling, "GET", "If-None-Match: " + etag + "\r\n").status, 304)
+          << spelling;
+    }
+  }
+  // One computation and one entry per tile, whatever the spelling.
+  EXPECT_EQ(s.tiles.cache().stats().computations, groups.size());
+  EXPECT_EQ(s.tiles.cache().stats().entries, groups.size());
+  // Non-canonical spellings that could name another tile or another answer are refused, and the
+  // message says why.
+  const std::pair<std::string, std::string> refused[] = {
+      {"/worlds/island/tiles/00/0/0.png", "'00' has a leading zero (write 0)"},
+      {"/worlds/island/tiles/10/0433/373.png", "'0433' has a leading zero (write 433)"},
+      {"/worlds/island/tiles/10/433/000373.png", "'000373' has a leading zero (write 373)"},
+      {"/worlds/island/local/02/1/2.glb", "'02' has a leading zero (write 2)"},
+      {web + ".png?size=0256", "'0256' has a leading zero (write 256)"},
+      {web + ".png?foo=1", "unknown query parameter 'foo' (tiles take only size and encoding)"},
+      {web + ".png?_=1700000000", "unknown query parameter '_'"},
+      {web + ".png?SIZE=256", "unknown query parameter 'SIZE'"},
+      {web + ".png?size=256&size=256", "query parameter 'size' is given twice"},
+      {web + ".png?size=256&size=512", "query parameter 'size' is given twice"}};
+  for (const auto& [target, message] : refused) {
+    const auto r = request(s.port(), target);
+    EXPECT_EQ(r.status, 400) << target;
+    EXPECT_NE(r.body.find(message), std::string::npos) << target << " -> " << r.body;
+  }
+  EXPECT_EQ(s.tiles.cache().stats().computations, groups.size());
 }
 
 TEST(TileServer, ConditionalRequestsAndHead) {

@@ -8,13 +8,17 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <poll.h>
 #include <sstream>
 #include <string>
+#include <sys/inotify.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
+#include <vector>
 
 namespace {
 
@@ -143,6 +147,36 @@ TEST(GenerateCommand, SameSeedSameBytesOtherSeedOtherNetwork) {
   EXPECT_NE(readFile(a), readFile(c));
 }
 
+TEST(GenerateCommand, TwoFreshGenerationsWriteTheSameWorldBytes) {
+  // Separate, empty cache directories: both runs generate (a cached world would be re-encoded
+  // from the same data and prove nothing). Generation is single-threaded: no thread count to
+  // vary.
+  std::string bytes[2];
+  for (int run = 0; run < 2; ++run) {
+    const fs::path dir = scratchDir() / ("fresh" + std::to_string(run));
+    fs::remove_all(dir);
+    const fs::path world = dir / "island.world";
+    const ProcessRun r = strahler("generate --json --quiet --seed 3 --cache-dir " +
+                                  (dir / "cache").string() + " -o " + world.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto summary = nlohmann::json::parse(r.out);
+    EXPECT_FALSE(summary["fromCache"].get<bool>());
+    EXPECT_TRUE(summary["stageSeconds"].contains("network")); // reported, not stored
+    bytes[run] = readFile(world);
+    // The cached copy is the same bytes too.
+    int cached = 0;
+    for (const auto& entry : fs::directory_iterator(dir / "cache")) {
+      if (entry.path().extension() == ".world") {
+        EXPECT_TRUE(readFile(entry.path()) == bytes[run]) << entry.path();
+        ++cached;
+      }
+    }
+    EXPECT_EQ(cached, 1);
+  }
+  ASSERT_GT(bytes[0].size(), 1000u);
+  EXPECT_TRUE(bytes[0] == bytes[1]) << "two fresh generations differ";
+}
+
 struct BadRun {
   std::string args;
   int exitCode;
@@ -180,7 +214,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"generate -o out.txt", 1, "use a .world"},
         BadRun{"generate --frobnicate", 2, "unknown option '--frobnicate'"},
         BadRun{"generate --coast", 2, "needs a value"},
-        BadRun{"transmogrify", 2, "unknown command 'transmogrify'"}),
+        BadRun{"transmogrify", 2, "unknown command 'transmogrify'"},
+        BadRun{"serve --public-url ftp://example.org", 2,
+               "--public-url 'ftp://example.org': scheme must be http or https, not 'ftp'"},
+        BadRun{"serve --public-url http://example.org:99999", 2,
+               "--public-url 'http://example.org:99999': port must be a number in 1..65535"}),
     [](const ::testing::TestParamInfo<BadRun>& param) {
       return "case" + std::to_string(param.index);
     });
@@ -397,6 +435,121 @@ std::string readLine(FILE* pipe) {
   return line;
 }
 
+/// Number of temporary world files ("*.world.tmp.*") in `dir`.
+int temporariesIn(const fs::path& dir) {
+  int n = 0;
+  for (const auto& entry : fs::directory_iterator(dir))
+    n += entry.path().filename().string().find(".world.tmp.") != std::string::npos;
+  return n;
+}
+
+/// Runs the real program with `args` and kills it (SIGKILL) the moment a temporary world file
+/// is created in `watched` (inotify). True when it died with that temporary still there; false
+/// when it finished first or renamed the file before the signal landed (bounded by 60 s).
+bool killWhenATemporaryAppears(const std::vector<std::string>& args, const fs::path& watched) {
+  const int watch = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+  if (watch < 0 || ::inotify_add_watch(watch, watched.c_str(), IN_CREATE) < 0)
+    return false;
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::vector<char*> argv{const_cast<char*>(STRAHLER_EXECUTABLE)};
+    for (const std::string& a : args)
+      argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    const int devNull = ::open("/dev/null", O_WRONLY);
+    ::dup2(devNull, 1);
+    ::dup2(devNull, 2);
+    ::execv(STRAHLER_EXECUTABLE, argv.data());
+    ::_exit(127);
+  }
+  std::string temporary;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (temporary.empty() && std::chrono::steady_clock::now() < deadline) {
+    pollfd p{watch, POLLIN, 0};
+    if (::poll(&p, 1, 20) > 0) {
+      alignas(inotify_event) char buffer[4096];
+      const ssize_t n = ::read(watch, buffer, sizeof buffer);
+      for (ssize_t at = 0; at < n;) {
+        const auto* event = reinterpret_cast<const inotify_event*>(buffer + at);
+        const std::string name = event->len > 0 ? event->name : "";
+        if (name.find(".world.tmp.") != std::string::npos) {
+          ::kill(pid, SIGKILL);
+          temporary = name;
+          break;
+        }
+        at += static_cast<ssize_t>(sizeof(inotify_event) + event->len);
+      }
+    } else if (::waitpid(pid, nullptr, WNOHANG) == pid) {
+      ::close(watch);
+      return false;
+    }
+  }
+  if (temporary.empty())
+    ::kill(pid, SIGKILL);
+  ::waitpid(pid, nullptr, 0);
+  ::close(watch);
+  return !temporary.empty() && fs::exists(watched / temporary);
+}
+
+TEST(GenerateCommand, TemporariesOfKilledWritesAreCleanedUp) {
+  const fs::path cache = scratchDir() / "kill-cache", cache2 = scratchDir() / "kill-cache2",
+                 out = scratchDir() / "kill-out";
+  for (const fs::path& dir : {cache, cache2, out}) {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  const std::string world = (out / "island.world").string();
+  auto generate = [&](const fs::path& cacheDir) {
+    return std::vector<std::string>{"generate",    "--quiet",         "--seed", "11",
+                                    "--cache-dir", cacheDir.string(), "-o",     world};
+  };
+  // Killed while writing the cached world, then (its cache complete) while writing -o.
+  bool killed = false;
+  for (int attempt = 0; attempt < 10 && !killed; ++attempt)
+    killed = killWhenATemporaryAppears(generate(cache), cache);
+  ASSERT_TRUE(killed) << "never caught the cache's temporary file";
+  killed = false;
+  for (int attempt = 0; attempt < 10 && !killed; ++attempt)
+    killed = killWhenATemporaryAppears(generate(cache2), out);
+  ASSERT_TRUE(killed) << "never caught the output's temporary file";
+  ASSERT_EQ(temporariesIn(cache), 1);
+  ASSERT_EQ(temporariesIn(out), 1);
+  // A temporary of a live process (this test) and a file that only looks similar stay.
+  const fs::path live = cache / ("other.world.tmp." + std::to_string(::getpid()) + ".0");
+  const fs::path foreign = cache / "notes.txt.tmp.1.2";
+  writeScratch("kill-cache/" + live.filename().string(), "x");
+  writeScratch("kill-cache/" + foreign.filename().string(), "x");
+
+  // The server cleans its cache directory when it starts.
+  const std::string command = "exec " + std::string(STRAHLER_EXECUTABLE) +
+                              " serve --quiet --port 0 --threads 1 --workers 1 --cache-dir " +
+                              cache.string() + " 2>&1 & echo $!";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  const pid_t server = static_cast<pid_t>(std::stol(readLine(pipe)));
+  std::string banner;
+  for (std::string line; (line = readLine(pipe)).find("serving") == std::string::npos;) {
+    banner += line + "\n";
+    if (line.empty() && std::feof(pipe))
+      break;
+  }
+  EXPECT_NE(banner.find("removed 1 stale temporary world file(s)"), std::string::npos) << banner;
+  EXPECT_EQ(temporariesIn(cache), 1); // the live one
+  EXPECT_TRUE(fs::exists(live));
+  EXPECT_TRUE(fs::exists(foreign));
+  ::kill(server, SIGTERM);
+  for (std::string line; !(line = readLine(pipe)).empty() || !std::feof(pipe);) {
+  }
+  pclose(pipe);
+
+  // The next write into the output directory cleans it.
+  const ProcessRun run =
+      strahler("generate --quiet --seed 11 --cache-dir " + cache2.string() + " -o " + world);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_EQ(temporariesIn(out), 0);
+  EXPECT_TRUE(fs::exists(world));
+}
+
 TEST(ServeCommand, ServesTilesAndStopsCleanlyOnSigterm) {
   // The real program on an ephemeral port; its first stdout line names the address.
   const std::string command = "STRAHLER_CACHE_DIR=" + (scratchDir() / "cache").string() + " exec " +
@@ -418,6 +571,17 @@ TEST(ServeCommand, ServesTilesAndStopsCleanlyOnSigterm) {
     return code;
   };
   EXPECT_EQ(status("/health"), "200");
+  // TileJSON names the address the client connected to, not its Host header.
+  FILE* tileJson =
+      popen(("curl -s -H 'Host: evil.example' http://127.0.0.1:" + std::to_string(port) +
+             "/worlds/default/tilejson.json")
+                .c_str(),
+            "r");
+  const auto tiles = nlohmann::json::parse(readLine(tileJson), nullptr, false);
+  pclose(tileJson);
+  EXPECT_EQ(tiles.is_object() ? tiles["tiles"] : nlohmann::json(),
+            nlohmann::json::array({"http://127.0.0.1:" + std::to_string(port) +
+                                   "/worlds/default/tiles/{z}/{x}/{y}.png"}));
   EXPECT_EQ(status("/worlds/default/tiles/10/434/373.png"), "200");
   EXPECT_EQ(status("/worlds/default/tiles/40/0/0.png"), "404");
   const auto start = std::chrono::steady_clock::now();

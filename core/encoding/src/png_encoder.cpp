@@ -116,6 +116,9 @@ base::Result<std::string> encodeUnguarded(const std::vector<std::uint8_t>& sampl
                                        SPNG_ENCODE_FINALIZE);
       rc != 0)
     return spngError("encoding the image", rc);
+  // Tiles are kept (tile cache) long after encoding: hand back exactly the bytes, not the
+  // reservation (a 256² sea tile is ~1.5 KB of a 50 KB buffer).
+  out.shrink_to_fit();
   return out;
 }
 

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
@@ -90,7 +91,56 @@ int syncParentDirectory(const std::string& path) {
   return 0;
 }
 
+/// The writer's PID of a temporary file named "<target>.tmp.<pid>.<n>" with `target` ending
+/// in `suffix`, or 0 when `name` is not such a file.
+pid_t tempFileOwner(std::string_view name, std::string_view suffix) {
+  const std::size_t dot = name.rfind('.');
+  if (dot == std::string_view::npos || dot + 1 == name.size() ||
+      name.find_first_not_of("0123456789", dot + 1) != std::string_view::npos)
+    return 0;
+  const std::size_t pidDot = name.rfind('.', dot - 1);
+  if (pidDot == std::string_view::npos || pidDot + 1 == dot || dot - pidDot > 10 ||
+      name.substr(pidDot + 1, dot - pidDot - 1).find_first_not_of("0123456789") !=
+          std::string_view::npos)
+    return 0;
+  const std::string_view target = name.substr(0, pidDot);
+  constexpr std::string_view kTmp = ".tmp";
+  if (target.size() < kTmp.size() + suffix.size() + 1 ||
+      target.substr(target.size() - kTmp.size()) != kTmp ||
+      target.substr(target.size() - kTmp.size() - suffix.size(), suffix.size()) != suffix)
+    return 0;
+  return static_cast<pid_t>(std::stol(std::string(name.substr(pidDot + 1, dot - pidDot - 1))));
+}
+
+/// False only when no process `pid` exists (EPERM means one exists, owned by someone else).
+bool processAlive(pid_t pid) {
+  return ::kill(pid, 0) == 0 || errno != ESRCH;
+}
+
 } // namespace
+
+std::size_t removeStaleTempFiles(const std::string& dir, std::string_view suffix,
+                                 std::chrono::seconds maxAge) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  fs::directory_iterator it(dir.empty() ? "." : dir, error);
+  std::size_t removed = 0;
+  const auto now = fs::file_time_type::clock::now();
+  for (; !error && it != fs::directory_iterator(); it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    const pid_t owner = tempFileOwner(name, suffix);
+    std::error_code typeError;
+    if (owner <= 0 || !it->is_regular_file(typeError))
+      continue;
+    const bool ownerGone = owner != ::getpid() && !processAlive(owner);
+    std::error_code timeError;
+    const auto written = fs::last_write_time(it->path(), timeError);
+    const bool old = !timeError && now - written > maxAge;
+    if ((ownerGone || old) && ::unlink(it->path().c_str()) == 0)
+      ++removed;
+  }
+  return removed;
+}
 
 base::Status writeFileAtomically(const std::string& path, std::string_view bytes) {
   std::string tempPath;

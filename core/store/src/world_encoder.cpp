@@ -252,12 +252,8 @@ void encodeHeader(const WorldData& world, v1::World& out) {
                   "the projection centre is not a (lon, lat) in degrees");
   out.set_projection_lon(c.x);
   out.set_projection_lat(c.y);
-  for (const base::StageTime& stage : world.stageSeconds) {
-    STRAHLER_ASSERT(std::isfinite(stage.seconds), "a stage time is not finite");
-    v1::StageTime* s = out.add_stage_times();
-    s->set_stage(stage.stage);
-    s->set_seconds(stage.seconds);
-  }
+  // world.stageSeconds is left out: timings differ from run to run, and a world file must be
+  // the same bytes for the same inputs (stage_times is only read, from older files).
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 #include "file_io.h"
 #include "world_proto.h"
 
+#include <filesystem>
 #include <limits>
 #include <zlib.h>
 
@@ -109,7 +110,12 @@ base::Result<construction::WorldData> decodeWorld(std::string_view bytes,
 }
 
 base::Status writeWorldFile(const std::string& path, const construction::WorldData& world) {
+  removeStaleWorldTemporaries(std::filesystem::path(path).parent_path().string());
   return detail::writeFileAtomically(path, encodeWorld(world));
+}
+
+std::size_t removeStaleWorldTemporaries(const std::string& dir) {
+  return detail::removeStaleTempFiles(dir, ".world", kStaleTemporaryAge);
 }
 
 base::Result<construction::WorldData> readWorldFile(const std::string& path) {

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace strahler::store {
@@ -48,6 +49,35 @@ TEST(WorldFile, OverwritingReplacesTheFileAndLeavesNoTemporaryFile) {
   ASSERT_TRUE(read.ok()) << read.error().message;
   EXPECT_TRUE(worldsEqual(read.value(), makeSmallWorld(2)));
   EXPECT_EQ(listDir(dir), std::vector<std::string>{"w.world"});
+}
+
+/// The PID of a process that has exited (and been reaped).
+pid_t deadPid() {
+  const pid_t pid = ::fork();
+  if (pid == 0)
+    ::_exit(0);
+  ::waitpid(pid, nullptr, 0);
+  return pid;
+}
+
+TEST(WorldFile, StaleTemporariesOfDeadOrLongGoneWritersAreRemoved) {
+  const std::string dir = scratchDir();
+  const std::string dead = std::to_string(deadPid()), live = std::to_string(::getppid());
+  for (const std::string& name : std::vector<std::string>{
+           "a.world.tmp." + dead + ".0", "b.world.tmp." + dead + ".17",
+           "c.world.tmp." + live + ".0", "d.world.tmp." + live + ".1", "e.world.tmp.x.0",
+           "f.png.tmp." + dead + ".0", "g.world.tmp." + dead, "h.world"})
+    std::ofstream(dir + "/" + name) << "x";
+  // A live writer's file older than kStaleTemporaryAge is stale too (PID reused, or another
+  // PID namespace sharing the directory).
+  std::filesystem::last_write_time(dir + "/d.world.tmp." + live + ".1",
+                                   std::filesystem::file_time_type::clock::now() -
+                                       kStaleTemporaryAge - std::chrono::minutes(1));
+  EXPECT_EQ(removeStaleWorldTemporaries(dir), 3u);
+  EXPECT_EQ(listDir(dir), (std::vector<std::string>{"c.world.tmp." + live + ".0", "e.world.tmp.x.0",
+                                                    "f.png.tmp." + dead + ".0",
+                                                    "g.world.tmp." + dead, "h.world"}));
+  EXPECT_EQ(removeStaleWorldTemporaries(dir + "/missing"), 0u);
 }
 
 TEST(WorldFile, MissingFileIsNotFound) {

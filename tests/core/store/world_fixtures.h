@@ -16,7 +16,8 @@
 namespace strahler::store::testing {
 
 /// A small world: 2 polygons (one with a lake), 2 trees of 12 nodes, a few primitives per
-/// block (some blocks empty), one river primitive without a node, stage times.
+/// block (some blocks empty), one river primitive without a node, stage times (which files do not
+/// store).
 construction::WorldData makeSmallWorld(std::uint64_t seed = 1);
 
 /// A world of realistic density over `areaKm2` of land: one node per km², 10 terrain
@@ -24,7 +25,8 @@ construction::WorldData makeSmallWorld(std::uint64_t seed = 1);
 /// 15 curve points per block.
 construction::WorldData makeLargeWorld(double areaKm2 = 1000.0, std::uint64_t seed = 7);
 
-/// Passes when every field of `a` equals that of `b` (doubles compared with ==).
+/// Passes when every stored field of `a` equals that of `b` (doubles compared with ==; stage
+/// times are not stored).
 ::testing::AssertionResult worldsEqual(const construction::WorldData& a,
                                        const construction::WorldData& b);
 

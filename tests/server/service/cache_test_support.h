@@ -13,16 +13,17 @@
 
 namespace strahler::service::testing {
 
-/// A tile of `size` bytes of `fill`, with empty MIME type and ETag so that its cache charge is
-/// exactly key + size + kEntryOverhead.
+/// A tile of `size` bytes of `fill` (capacity `size` too), with empty MIME type and ETag.
 inline std::shared_ptr<const CachedTile> makeTile(std::size_t size, char fill = 't') {
   auto tile = std::make_shared<CachedTile>();
   tile->bytes.assign(size, fill);
   return tile;
 }
 
-/// The fixed per-entry charge documented in TileCacheStats::bytes.
-constexpr std::size_t kEntryOverhead = 64;
+/// The charge of an entry of `key` holding makeTile(size).
+inline std::size_t entryCharge(const std::string& key, std::size_t size) {
+  return TileCache::chargedBytes(key, *makeTile(size));
+}
 
 /// A Compute that returns `tile` and counts its calls.
 inline TileCache::Compute computeReturning(std::shared_ptr<const CachedTile> tile,

@@ -16,7 +16,7 @@ namespace strahler::service {
 namespace {
 
 using testing::computeReturning;
-using testing::kEntryOverhead;
+using testing::entryCharge;
 using testing::makeTile;
 using testing::ManualScheduler;
 using testing::OutcomeLog;
@@ -62,7 +62,26 @@ TEST(TileCache, ChargesKeyTileMimeEtagAndFixedOverheadPerEntry) {
   tile->mimeType = "image/png";
   tile->etag = "\"abc\"";
   cache.get("key-1", computeReturning(tile), runInline, [](const TileCache::Outcome&) {});
-  EXPECT_EQ(cache.stats().bytes, 5u + 300u + 9u + 5u + kEntryOverhead);
+  // Short strings live inside the object; a heap string costs its capacity + NUL + header.
+  EXPECT_EQ(cache.stats().bytes, 320u + TileCache::entryOverheadBytes());
+  EXPECT_EQ(cache.stats().bytes, TileCache::chargedBytes("key-1", *tile));
+}
+
+TEST(TileCache, ChargesTheCapacityAStringHoldsNotItsSize) {
+  auto reserved = std::make_shared<CachedTile>();
+  reserved->bytes.reserve(50'000); // an encoder's reservation, never shrunk
+  reserved->bytes.assign(1'500, 'x');
+  auto exact = std::make_shared<CachedTile>(*reserved);
+  exact->bytes.shrink_to_fit();
+  EXPECT_GE(TileCache::chargedBytes("k", *reserved), 50'000u);
+  EXPECT_LT(TileCache::chargedBytes("k", *exact), 1'600u + TileCache::entryOverheadBytes());
+  // So a cache bound holds as many tiles as it can really afford.
+  TileCache cache(200'000);
+  for (int i = 0; i < 10; ++i)
+    cache.get("k" + std::to_string(i), computeReturning(reserved), runInline,
+              [](const TileCache::Outcome&) {});
+  EXPECT_LE(cache.stats().entries, 3u);
+  EXPECT_LE(cache.stats().bytes, 200'000u);
 }
 
 TEST(TileCache, ChargesPreparedHttpFieldsToo) {
@@ -71,7 +90,10 @@ TEST(TileCache, ChargesPreparedHttpFieldsToo) {
   tile->bytes.assign(300, 'x');
   tile->httpFields = "ETag: \"abc\"\r\n";
   cache.get("key-1", computeReturning(tile), runInline, [](const TileCache::Outcome&) {});
-  EXPECT_EQ(cache.stats().bytes, 5u + 300u + tile->httpFields.size() + kEntryOverhead);
+  EXPECT_EQ(cache.stats().bytes, 320u + TileCache::entryOverheadBytes()); // fields are short
+  EXPECT_EQ(cache.stats().bytes, TileCache::chargedBytes("key-1", *tile));
+  tile->httpFields.assign(100, 'f');
+  EXPECT_EQ(TileCache::chargedBytes("key-1", *tile), 320u + 112u + TileCache::entryOverheadBytes());
 }
 
 TEST(TileCache, FindReturnsCachedTilesAsHitsAndCountsNothingOtherwise) {
@@ -88,7 +110,7 @@ TEST(TileCache, FindReturnsCachedTilesAsHitsAndCountsNothingOtherwise) {
 }
 
 TEST(TileCache, FindRefreshesRecency) {
-  const std::size_t entry = 1 + 100 + kEntryOverhead;
+  const std::size_t entry = entryCharge("a", 100);
   TileCache cache(2 * entry);
   fetch(cache, "a");
   fetch(cache, "b");
@@ -100,7 +122,7 @@ TEST(TileCache, FindRefreshesRecency) {
 }
 
 TEST(TileCache, EvictsLeastRecentlyUsedFirst) {
-  const std::size_t entry = 1 + 100 + kEntryOverhead;
+  const std::size_t entry = entryCharge("a", 100);
   TileCache cache(3 * entry);
   fetch(cache, "a");
   fetch(cache, "b");
@@ -129,7 +151,7 @@ TEST(TileCache, BytesNeverExceedTheBoundOverManyInserts) {
     fetch(cache, "k" + std::to_string(keyOf(random)), sizeOf(random));
     const TileCacheStats stats = cache.stats();
     ASSERT_LE(stats.bytes, bound) << "after insert " << i;
-    ASSERT_LE(stats.entries * kEntryOverhead, stats.bytes);
+    ASSERT_LE(stats.entries * TileCache::entryOverheadBytes(), stats.bytes);
   }
   EXPECT_GT(cache.stats().evictions, 100u);
 }

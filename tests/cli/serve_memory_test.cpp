@@ -1,0 +1,137 @@
+// The real `strahler serve` filled with many distinct tiles over HTTP: its resident memory
+// stays within --cache-mb plus a documented constant (issue 17, item 1).
+#include "test_client.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+/// Resident memory allowed above the bound: what tile computations leave in the allocator's
+/// arenas (fragmented by the cached tiles between them, so malloc_trim cannot return it all)
+/// and the I/O buffers. Measured growth with 2 workers (docs/performance.md): 4,000 small
+/// tiles +3 MB (before the cache charged capacity: +100 MB); then 24 tiles of 1024² +16..21 MB
+/// with the heap trimmer, +53 MB without.
+constexpr long kRssSlackMb = 32;
+constexpr long kCacheMb = 4;
+
+/// VmRSS of process `pid` in MB, or -1.
+long residentMb(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmRSS:", 0) == 0)
+      return std::stol(line.substr(6)) / 1024;
+  return -1;
+}
+
+std::string readLine(FILE* pipe) {
+  std::string line;
+  int c;
+  while ((c = std::fgetc(pipe)) != EOF && c != '\n')
+    line += static_cast<char>(c);
+  return line;
+}
+
+/// Requests the 1024² EXR tiles of the island at zoom 13 (x 3464.., y 2984..), `count` of them,
+/// on two keep-alive connections; returns how many were not 200.
+int requestLargeLandTiles(std::uint16_t port, int count) {
+  std::atomic<int> failed{0};
+  std::vector<std::thread> clients;
+  for (int c = 0; c < 2; ++c)
+    clients.emplace_back([&, c] {
+      strahler::http::test::Connection connection(port, std::chrono::seconds(60));
+      for (int i = c; i < count; i += 2) {
+        const auto r = connection.send(strahler::http::test::getRequest(
+                           "/worlds/default/tiles/13/" + std::to_string(3464 + i % 8) + "/" +
+                           std::to_string(2984 + i / 8) + ".exr?size=1024"))
+                           ? connection.read()
+                           : std::nullopt;
+        if (!r || r->status != 200) {
+          ++failed;
+          return;
+        }
+      }
+    });
+  for (std::thread& t : clients)
+    t.join();
+  return failed.load();
+}
+
+/// Requests the far-sea PNG tiles 18/x/5000 for x in [first, first + count) on four keep-alive
+/// connections; returns how many were not 200.
+int requestTiles(std::uint16_t port, int first, int count) {
+  std::atomic<int> failed{0};
+  std::vector<std::thread> clients;
+  for (int c = 0; c < 4; ++c)
+    clients.emplace_back([&, c] {
+      strahler::http::test::Connection connection(port, std::chrono::seconds(30));
+      for (int x = first + c; x < first + count; x += 4) {
+        const auto r = connection.send(strahler::http::test::getRequest(
+                           "/worlds/default/tiles/18/" + std::to_string(1000 + x) + "/5000.png"))
+                           ? connection.read()
+                           : std::nullopt;
+        if (!r || r->status != 200) {
+          ++failed;
+          return;
+        }
+      }
+    });
+  for (std::thread& t : clients)
+    t.join();
+  return failed.load();
+}
+
+TEST(ServeCommand, ResidentMemoryStaysWithinTheCacheBound) {
+  const std::string scratch = std::string(STRAHLER_BINARY_DIR) + "/cli_test_scratch/memory";
+  const std::string command = "STRAHLER_CACHE_DIR=" + scratch + " exec " +
+                              std::string(STRAHLER_EXECUTABLE) +
+                              " serve --quiet --port 0 --threads 2 --workers 2 --cache-mb " +
+                              std::to_string(kCacheMb) + " 2>&1 & echo $!";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  const pid_t pid = static_cast<pid_t>(std::stol(readLine(pipe)));
+  const std::string banner = readLine(pipe);
+  const std::size_t colon = banner.rfind(':');
+  if (colon == std::string::npos) {
+    ::kill(pid, SIGKILL);
+    pclose(pipe);
+    FAIL() << banner;
+  }
+  const auto port = static_cast<std::uint16_t>(std::stoi(banner.substr(colon + 1)));
+  // Warm up: threads, arenas and buffers exist, and 400 tiles are cached.
+  EXPECT_EQ(requestTiles(port, 0, 400), 0);
+  const long warm = residentMb(pid);
+  // ~4,000 distinct tiles: about twice what 4 MB holds, so the cache fills and evicts.
+  EXPECT_EQ(requestTiles(port, 400, 4000), 0);
+  const long filled = residentMb(pid);
+  // A burst of large tiles (~20 MB of temporaries each) that the cache cannot keep many of:
+  // what the allocator keeps afterwards is given back within a second (MemoryTrimmer).
+  EXPECT_EQ(requestLargeLandTiles(port, 24), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  const long afterBurst = residentMb(pid);
+  const auto metrics = strahler::http::test::fetch(
+      port, strahler::http::test::getRequest("/metrics"), std::chrono::seconds(10));
+  ::kill(pid, SIGTERM);
+  for (std::string line; !(line = readLine(pipe)).empty() || !std::feof(pipe);) {
+  }
+  pclose(pipe);
+  ASSERT_GT(warm, 0);
+  EXPECT_LE(filled - warm, kCacheMb + kRssSlackMb)
+      << "RSS " << warm << " MB after warming up, " << filled << " MB after 4,000 tiles";
+  EXPECT_LE(afterBurst - warm, kCacheMb + kRssSlackMb)
+      << "RSS " << warm << " MB after warming up, " << afterBurst
+      << " MB 1.5 s after 24 tiles of 1024²";
+  ASSERT_TRUE(metrics);
+  EXPECT_NE(metrics->body.find("strahler_tile_cache_evictions_total"), std::string::npos);
+  EXPECT_EQ(metrics->body.find("strahler_tile_cache_evictions_total 0."), std::string::npos)
+      << "the cache never filled";
+}
+
+} // namespace
