@@ -258,13 +258,19 @@ TEST(WorldCommands, InfoRenderAndAnalyzeAWorldFile) {
   const auto& relief = report["relief"];
   for (const char* key : {"raster", "slopeArea", "slopeDeg", "steeperThan45Fraction", "confluences",
                           "confluences3PlusFraction", "drainageDensityKmPerKm2", "dissection",
-                          "channelsNearRiversFraction", "riversNearChannelsFraction",
+                          "highestM", "channelsNearRiversFraction", "riversNearChannelsFraction",
                           "networkConfluences3PlusFraction", "sinuosity"})
     EXPECT_TRUE(relief.contains(key)) << key;
   EXPECT_GT(relief["slopeDeg"]["p50"].get<double>(), 0.0);
   EXPECT_GT(relief["drainageDensityKmPerKm2"]["1"].get<double>(), 0.0);
   // The realism targets this world meets (generator version 6).
   EXPECT_GE(relief["dissection"].get<double>(), 3.5);
+  // The elevation rule (docs/architecture.md): the highest point within what real hilly
+  // islands of this size show, 8–33 m per square root of km² (1,014 km²: 255–1,050 m).
+  const double highest = relief["highestM"].get<double>();
+  const double rootArea = std::sqrt(stats["areaKm2"].get<double>());
+  EXPECT_GT(highest, 8.0 * rootArea);
+  EXPECT_LT(highest, 33.0 * rootArea);
   EXPECT_GE(relief["channelsNearRiversFraction"].get<double>(), 0.9);
   EXPECT_GE(relief["riversNearChannelsFraction"].get<double>(), 0.95);
   EXPECT_GE(relief["slopeArea"]["theta"].get<double>(), 0.3);

@@ -72,6 +72,7 @@ Json reliefJson(const ReliefReport& relief) {
   json["drainageDensityKmPerKm2"] = {{"0.1", number(t.drainageDensity01)},
                                      {"1", number(t.drainageDensity1)}};
   json["dissection"] = number(t.dissection);
+  json["highestM"] = number(t.highest);
   json["channelsNearRiversFraction"] = number(n.channelsNearRivers);
   json["riversNearChannelsFraction"] = number(n.riversNearChannels);
   json["networkConfluences3PlusFraction"] = number(n.networkConfluences.shareThreeOrMore);

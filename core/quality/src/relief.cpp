@@ -260,6 +260,12 @@ ReliefFigures measureRelief(const HeightRaster& raster, const FlowField& flow) {
   figures.drainageDensity01 = drainageDensity(flow, 0.1);
   figures.drainageDensity1 = drainageDensity(flow, kChannelAreaKm2);
   figures.dissection = measureDissection(raster);
+  figures.highest = kNaN;
+  for (std::size_t i = 0; i < raster.heights.size(); ++i)
+    if (raster.cellClass[i] == static_cast<std::uint8_t>(CellClass::kLand))
+      figures.highest = std::isnan(figures.highest)
+                            ? double(raster.heights[i])
+                            : std::max(figures.highest, double(raster.heights[i]));
   return figures;
 }
 

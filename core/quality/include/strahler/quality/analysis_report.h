@@ -39,7 +39,7 @@ std::string analysisReportJson(const DrainageReport& drainage, const HortonStati
 ///    "slopeArea": {"theta", "r2", "bins"}, "slopeDeg": {"p50", "p90", "p99"},
 ///    "steeperThan45Fraction", "confluences", "confluences3PlusFraction",
 ///    "drainageDensityKmPerKm2": {"0.1": ≥ 0.1 km² channels, "1": ≥ 1 km² channels},
-///    "dissection", "channelsNearRiversFraction", "riversNearChannelsFraction",
+///    "dissection", "highestM", "channelsNearRiversFraction", "riversNearChannelsFraction",
 ///    "networkConfluences3PlusFraction", "sinuosity": {"B", "E", "D", "D-delta"}}
 /// (definitions in relief.h and river_agreement.h; the last four are null without a world).
 std::string demReportJson(const std::string& path, const ReliefReport& relief);

@@ -40,6 +40,7 @@ struct ReliefFigures {
   double drainageDensity01 = 0.0; ///< km of D8 channel (≥ 0.1 km²) per km² of land; NaN no land.
   double drainageDensity1 = 0.0;  ///< The same for channels ≥ 1 km².
   double dissection = 0.0;        ///< See measureDissection; NaN without interior cells.
+  double highest = 0.0;           ///< Greatest height of a land cell, m; NaN without land.
   std::size_t landCells = 0;      ///< Land cells of the raster.
 };
 
