@@ -91,6 +91,8 @@ World::World(WorldData data)
     HotRiver& hot = hotRivers_.emplace_back();
     hot.support = primitives::supportBox(river);
     hot.radius = river.radius;
+    hot.minReach = std::min(primitives::valleyMinReach(river.type, river.widthUp, river.widthDown),
+                            river.radius);
     hot.reach = withRoundingMargin(river.radius);
     hot.widthUp = river.widthUp;
     hot.widthDown = river.widthDown;

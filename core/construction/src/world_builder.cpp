@@ -75,6 +75,7 @@ base::Result<WorldData> generateWorldData(const input::WorldSpec& spec, std::str
     b.riverEnd = river;
     data.blocks.push_back(b);
   }
+  primitives::fitValleyRadii(data.rivers, data.terrain);
   for (std::size_t i = 0; i < hydrology.network.nodes.size(); ++i) {
     data.flow.push_back(quantize(hydrology.analysis.flow[i], Quantum::kFlow));
     data.riverTypes.push_back(primitives::toRiverType(hydrology.analysis.rosgen[i]));

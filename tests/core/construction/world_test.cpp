@@ -131,8 +131,10 @@ Sample referenceRivers(const World& world, Vec2 p, double spacing, double terrai
     }
     const double width = r.widthUp + (r.widthDown - r.widthUp) * along;
     const double depth = r.depthUp + (r.depthDown - r.depthUp) * along;
-    const double floor = primitives::riverFloor(r.radius, spacing);
-    const double reach = primitives::valleyReach(r.radius, terrain - elevation);
+    const double minReach =
+        std::min(primitives::valleyMinReach(r.type, r.widthUp, r.widthDown), r.radius);
+    const double floor = primitives::riverFloor(minReach, spacing);
+    const double reach = primitives::valleyReach(minReach, r.radius, terrain - elevation);
     const double fade = primitives::riverFade(r.radius, spacing);
     const double w =
         nearest < reach ? primitives::riverWeight(width, reach, nearest, floor, fade) : 0.0;

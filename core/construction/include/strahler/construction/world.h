@@ -171,7 +171,8 @@ public:
     double depthUp = 0.0;                             ///< channel depth upstream, m
     double depthDown = 0.0;                           ///< ... and downstream
     double bankSlope = 0.0;                           ///< primitives::bankSlope() of its type
-    bool flatBed = false;                             ///< primitives::hasFlatBed() of its type
+    double minReach = 0.0; ///< primitives::valleyMinReach(), at most the radius
+    bool flatBed = false;  ///< primitives::hasFlatBed() of its type
   };
   /// Largest fBm gain evaluated (keeps octave amplitudes decreasing).
   static constexpr double kMaxRoughness = 0.95;

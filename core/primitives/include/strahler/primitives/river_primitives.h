@@ -39,12 +39,25 @@ inline double bankSlope(RiverType type) noexcept {
 /// valley deep below its terrain widens so that its sides stay below about 35°.
 inline constexpr double kValleyRunPerRise = 2.2;
 
-/// How far a river of valley radius `radius` (its support) reaches where the terrain stands
-/// `rise` metres above its water: kValleyRunPerRise · rise, between half the radius and the
-/// radius. Shallow valleys stay narrow, deep ones get long sides instead of walls.
-inline double valleyReach(double radius, double rise) noexcept {
-  return std::clamp(kValleyRunPerRise * rise, 0.5 * radius, radius);
+/// How far a river's valley reaches where the terrain stands `rise` metres above its water:
+/// kValleyRunPerRise · rise, at least `minReach` (valleyMinReach), at most the river's radius
+/// (its support; the radius wins if smaller). Shallow valleys stay narrow, deep ones get long
+/// sides instead of walls.
+inline double valleyReach(double minReach, double radius, double rise) noexcept {
+  return std::min(std::max(kValleyRunPerRise * rise, minReach), radius);
 }
+
+/// The least reach of a river's valley: half the radius of its type for its wider channel end
+/// (valleyRadius), whatever radius fitValleyRadii gave it.
+double valleyMinReach(RiverType type, double widthUp, double widthDown) noexcept;
+
+/// Narrows each river's radius (its support, at first valleyRadius) to the reach its valley
+/// can need: kValleyRunPerRise times the most that a terrain primitive within the radius (plus
+/// half a terrain radius) stands above the river's water at the nearest curve point, with a
+/// 15 % margin, between valleyMinReach and the radius; quantized. A wide support costs every
+/// sample near it a longer curve search, so lowland rivers between low hills keep a small one.
+void fitValleyRadii(std::vector<RiverPrimitive>& rivers,
+                    const std::vector<TerrainPrimitive>& terrain);
 
 /// Sample spacings a river's radius spans where it starts to fade out (riverFade).
 inline constexpr double kRiverFadeSpacings = 2.0;
@@ -70,11 +83,12 @@ inline double riverFloorInverse(double floor) noexcept {
 /// samples would otherwise be sampled at varying depths and read as a chain of pits).
 inline constexpr double kFloorPerSpacing = 0.75;
 
-/// The half-width, m, of the flat floor of a river of valley radius `radius` sampled every
-/// `spacing` metres (0: exact): kFloorPerSpacing · spacing, at most a quarter of the radius.
-/// The LOD rule for rivers: detail narrower than the samples fades into the floor.
-inline double riverFloor(double radius, double spacing) noexcept {
-  return std::min(kFloorPerSpacing * spacing, 0.25 * radius);
+/// The half-width, m, of the flat floor of a river whose valley reaches at least `minReach`
+/// (valleyMinReach) sampled every `spacing` metres (0: exact): kFloorPerSpacing · spacing, at
+/// most half the least reach. The LOD rule for rivers: detail narrower than the samples fades
+/// into the floor.
+inline double riverFloor(double minReach, double spacing) noexcept {
+  return std::min(kFloorPerSpacing * spacing, 0.5 * minReach);
 }
 
 /// The profile δ(d) across a river, relative to its water surface, with floor half-width

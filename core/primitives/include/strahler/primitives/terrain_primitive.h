@@ -17,7 +17,7 @@ struct TerrainPrimitive {
   /// Gradient of the primitive's plane, m/m: the hillslope it lies on, so that a blend of
   /// primitives keeps the slopes from the rivers up to the ridges instead of averaging them
   /// into plateaus.
-  geometry::Vec2 slope;
+  geometry::Vec2 slope{};
   double amplitude = 0.0; ///< Relief amplitude, metres (rough mountains, smooth plains).
   double roughness = 0.5; ///< Gain per octave, in [0.3, 0.7].
 
