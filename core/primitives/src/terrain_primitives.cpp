@@ -19,6 +19,8 @@ constexpr double kMinSpacingFraction = 0.6;
 constexpr double kAmplitudePerMetreOfRelief = 0.3;
 /// Steepest plane a primitive gets (tan 40°).
 constexpr double kMaxHillslope = 0.84;
+/// Share of that gradient a primitive's plane keeps: whole planes cross below the rivers at the
+/// heads of hollows and leave closed bowls (docs/architecture.md, sloping terrain primitives).
 constexpr double kPlaneShare = 0.25;
 
 /// The jittered candidate of grid cell (i, j) and its random priority.

@@ -32,7 +32,8 @@ struct NoiseOctaves {
 /// A world ready to evaluate: the data plus the indexes that make h(p) local.
 /// h = C(B(T…), U(R…)) (Section 6) on land, shaped by CoastShape at the shore and below
 /// the sea. Evaluation is a pure, thread-safe function of (world, point, sample spacing).
-/// The terrain blend B(T…) = Σ w_i c_i / Σ w_i + Σ_k A G^k octave_k(p), where the amplitude A
+/// The terrain blend B(T…) = Σ w_i h_i(p) / Σ w_i + Σ_k A G^k octave_k(p), h_i the plane of
+/// primitive i (its elevation and slope), where the amplitude A
 /// and gain G are the w-weighted means of the primitives' amplitude and roughness, and octaves
 /// 2–6 are gullies running down the blend's gradient: one shared relief whose character
 /// follows the primitives (see docs/architecture.md).

@@ -14,6 +14,8 @@ namespace strahler::construction {
 /// 2: the terrain blend mixes noise amplitude and roughness (docs/architecture.md).
 /// 5: rule 1 (fill) gives at most two children (binary confluences); concave river
 /// profiles, valleys scaled to the catchment, gully relief octaves.
+/// 6: river floors at the sample spacing, rivers joined by the deeper cut, sloping terrain
+/// primitives, valleys that widen with their depth (fitted radii), λ 0.35, concavity 0.3.
 inline constexpr const char* kGeneratorVersion = "strahler-generator-6";
 
 /// Runs the whole generation of Sections 4–7 on `spec`: network, blocks and analysis

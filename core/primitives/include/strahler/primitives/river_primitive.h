@@ -39,7 +39,7 @@ struct RiverPrimitive {
   double widthDown = 0.0;        ///< Channel width at the downstream end, m.
   double depthUp = 0.0;          ///< Channel depth below the water surface, upstream, m.
   double depthDown = 0.0;        ///< ... and downstream, m.
-  double radius = 0.0;           ///< r: half-width of the valley the river replaces, m.
+  double radius = 0.0;           ///< r: the farthest its valley reaches (support), m.
   RiverType type = RiverType::kSinuous;
   base::NodeId node; ///< The network node at the upstream end of the section.
 
