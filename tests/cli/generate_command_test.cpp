@@ -1,4 +1,6 @@
 // Runs the real strahler program as a user would, and checks its outputs and exit codes.
+#include "test_client.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -23,6 +25,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using strahler::http::test::readLine;
 
 struct ProcessRun {
   int exitCode = -1;
@@ -431,15 +434,6 @@ TEST(TileCommand, WritesEveryFormatAndRejectsBadRequests) {
 } // namespace
 
 namespace {
-
-/// Reads one line from a pipe (empty at end of file).
-std::string readLine(FILE* pipe) {
-  std::string line;
-  int c;
-  while ((c = std::fgetc(pipe)) != EOF && c != '\n')
-    line += static_cast<char>(c);
-  return line;
-}
 
 /// Number of temporary world files ("*.world.tmp.*") in `dir`.
 int temporariesIn(const fs::path& dir) {

@@ -14,6 +14,8 @@
 
 namespace {
 
+using strahler::http::test::readLine;
+
 /// Resident memory allowed above the bound: what tile computations leave in the allocator's
 /// arenas (fragmented by the cached tiles between them, so malloc_trim cannot return it all)
 /// and the I/O buffers. Measured growth with 2 workers (docs/performance.md): 4,000 small
@@ -31,61 +33,48 @@ long residentMb(pid_t pid) {
   return -1;
 }
 
-std::string readLine(FILE* pipe) {
-  std::string line;
-  int c;
-  while ((c = std::fgetc(pipe)) != EOF && c != '\n')
-    line += static_cast<char>(c);
-  return line;
+/// Requests `targets` on `connections` keep-alive connections (connection c takes targets c,
+/// c + connections, ...); returns how many connections met a status other than 200.
+int requestAll(std::uint16_t port, const std::vector<std::string>& targets, int connections,
+               std::chrono::seconds timeout) {
+  std::atomic<int> failed{0};
+  std::vector<std::thread> clients;
+  for (int c = 0; c < connections; ++c)
+    clients.emplace_back([&, c] {
+      strahler::http::test::Connection connection(port, timeout);
+      for (std::size_t i = static_cast<std::size_t>(c); i < targets.size();
+           i += static_cast<std::size_t>(connections)) {
+        const auto r = connection.send(strahler::http::test::getRequest(targets[i]))
+                           ? connection.read()
+                           : std::nullopt;
+        if (!r || r->status != 200) {
+          ++failed;
+          return;
+        }
+      }
+    });
+  for (std::thread& t : clients)
+    t.join();
+  return failed.load();
 }
 
 /// Requests the 1024² EXR tiles of the island at zoom 13 (x 3464.., y 2984..), `count` of them,
-/// on two keep-alive connections; returns how many were not 200.
+/// on two keep-alive connections; returns how many connections met a status other than 200.
 int requestLargeLandTiles(std::uint16_t port, int count) {
-  std::atomic<int> failed{0};
-  std::vector<std::thread> clients;
-  for (int c = 0; c < 2; ++c)
-    clients.emplace_back([&, c] {
-      strahler::http::test::Connection connection(port, std::chrono::seconds(60));
-      for (int i = c; i < count; i += 2) {
-        const auto r = connection.send(strahler::http::test::getRequest(
-                           "/worlds/default/tiles/13/" + std::to_string(3464 + i % 8) + "/" +
-                           std::to_string(2984 + i / 8) + ".exr?size=1024"))
-                           ? connection.read()
-                           : std::nullopt;
-        if (!r || r->status != 200) {
-          ++failed;
-          return;
-        }
-      }
-    });
-  for (std::thread& t : clients)
-    t.join();
-  return failed.load();
+  std::vector<std::string> targets;
+  for (int i = 0; i < count; ++i)
+    targets.push_back("/worlds/default/tiles/13/" + std::to_string(3464 + i % 8) + "/" +
+                      std::to_string(2984 + i / 8) + ".exr?size=1024");
+  return requestAll(port, targets, 2, std::chrono::seconds(60));
 }
 
 /// Requests the far-sea PNG tiles 18/x/5000 for x in [first, first + count) on four keep-alive
-/// connections; returns how many were not 200.
+/// connections; returns how many connections met a status other than 200.
 int requestTiles(std::uint16_t port, int first, int count) {
-  std::atomic<int> failed{0};
-  std::vector<std::thread> clients;
-  for (int c = 0; c < 4; ++c)
-    clients.emplace_back([&, c] {
-      strahler::http::test::Connection connection(port, std::chrono::seconds(30));
-      for (int x = first + c; x < first + count; x += 4) {
-        const auto r = connection.send(strahler::http::test::getRequest(
-                           "/worlds/default/tiles/18/" + std::to_string(1000 + x) + "/5000.png"))
-                           ? connection.read()
-                           : std::nullopt;
-        if (!r || r->status != 200) {
-          ++failed;
-          return;
-        }
-      }
-    });
-  for (std::thread& t : clients)
-    t.join();
-  return failed.load();
+  std::vector<std::string> targets;
+  for (int x = first; x < first + count; ++x)
+    targets.push_back("/worlds/default/tiles/18/" + std::to_string(1000 + x) + "/5000.png");
+  return requestAll(port, targets, 4, std::chrono::seconds(30));
 }
 
 TEST(ServeCommand, ResidentMemoryStaysWithinTheCacheBound) {

@@ -208,4 +208,12 @@ std::optional<RawResponse> fetch(std::uint16_t port, std::string_view request,
   return connection.read(request.substr(0, 5) == "HEAD ");
 }
 
+std::string readLine(std::FILE* pipe) {
+  std::string line;
+  int c;
+  while ((c = std::fgetc(pipe)) != EOF && c != '\n')
+    line += static_cast<char>(c);
+  return line;
+}
+
 } // namespace strahler::http::test

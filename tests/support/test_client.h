@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -70,5 +71,9 @@ std::string getRequest(std::string_view target, std::string_view extraHeaders = 
 std::optional<RawResponse>
 fetch(std::uint16_t port, std::string_view request,
       std::chrono::milliseconds timeout = std::chrono::milliseconds(5000));
+
+/// Reads one line from a pipe (a child process's output), without its newline; empty at end of
+/// file.
+std::string readLine(std::FILE* pipe);
 
 } // namespace strahler::http::test
