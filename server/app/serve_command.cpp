@@ -10,6 +10,7 @@
 
 #include "strahler/store/world_file.h"
 
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -18,6 +19,12 @@
 
 namespace strahler::app {
 namespace {
+
+/// How long SIGINT/SIGTERM lets requests in flight finish before every connection is closed.
+/// Queued tile computations are dropped at once (503), so the process exits within about this
+/// plus 0.3 s plus the longest single tile computation still running at the deadline;
+/// docker/compose.yaml's stop_grace_period (10 s) stays above it.
+constexpr std::chrono::milliseconds kDrainWindow{4000};
 
 constexpr const char* kServeUsage =
     "usage: strahler serve [WORLD.world ...] [--coast FILE.geojson [--params FILE.json] [--seed "
@@ -32,7 +39,9 @@ constexpr const char* kServeUsage =
     "the world and a few tens of MB of working memory.\n"
     "--public-url URL (http[s]://host[:port][/prefix]) is the base of absolute URLs (TileJSON's\n"
     "tiles) behind a proxy; without it they use the address the client connected to, never\n"
-    "the Host header.\n";
+    "the Host header.\n"
+    "SIGINT/SIGTERM: queued tiles get 503, tiles being computed are sent, and the process\n"
+    "exits within the 4 s drain window (plus the longest tile still being computed).\n";
 
 /// A URL-safe world id from a name: [A-Za-z0-9_-], unique among `taken`.
 std::string worldId(const std::string& name, std::set<std::string>& taken) {
@@ -165,7 +174,10 @@ int runServe(const std::vector<std::string>& raw) {
   sigwait(&stopSignals, &signal);
   std::printf("strahler: %s received, draining\n", signal == SIGTERM ? "SIGTERM" : "SIGINT");
   std::fflush(stdout);
-  server.stop(std::chrono::milliseconds(4000));
+  // Nobody would receive the queued tiles: drop them first (503, Retry-After), so that only
+  // the computations already running delay the exit.
+  tiles.cancelQueued();
+  server.stop(kDrainWindow);
   tiles.drain();
   return 0;
 }

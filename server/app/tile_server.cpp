@@ -161,6 +161,10 @@ void TileServer::drain() {
   pool_.drain();
 }
 
+void TileServer::cancelQueued() {
+  pool_.cancelQueued();
+}
+
 std::vector<std::string> TileServer::worldIds() const {
   std::vector<std::string> ids;
   for (const auto& w : worlds_)
