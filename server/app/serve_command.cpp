@@ -31,7 +31,7 @@ constexpr const char* kServeUsage =
     "N]]\n"
     "                      [--host 127.0.0.1] [--port 8080] [--threads N] [--workers N]\n"
     "                      [--cache-mb M] [--cache-dir DIR] [--web-root DIR] [--public-url URL]\n"
-    "                      [--quiet]\n"
+    "                      [--max-client-connections N] [--quiet]\n"
     "Serves worlds over HTTP: the viewer at /, TileJSON, Web Mercator and local tiles in every\n"
     "format, rivers.geojson, /health and /metrics. Without a world it loads (or generates)\n"
     "the world of --coast, or of the default island. SIGINT/SIGTERM drain and stop it.\n"
@@ -40,6 +40,10 @@ constexpr const char* kServeUsage =
     "--public-url URL (http[s]://host[:port][/prefix]) is the base of absolute URLs (TileJSON's\n"
     "tiles) behind a proxy; without it they use the address the client connected to, never\n"
     "the Host header.\n"
+    "--max-client-connections N (default 64) caps the connections of one client address (IPv6:\n"
+    "one /64) among the 1,024 the server holds; at a cap the oldest idle or header-incomplete\n"
+    "connection is closed to make room, else the new one gets 503. 0: no per-client cap (behind\n"
+    "a proxy, whose address every connection has). A header not complete in 10 s gets 408.\n"
     "SIGINT/SIGTERM: queued tiles get 503, tiles being computed are sent, and the process\n"
     "exits within the 4 s drain window (plus the longest tile still being computed).\n";
 
@@ -100,11 +104,11 @@ std::string findWebRoot(const CliArgs& args) {
 } // namespace
 
 int runServe(const std::vector<std::string>& raw) {
-  auto parsed =
-      CliArgs::parse("serve", raw,
-                     {"--coast", "--params", "--seed", "--host", "--port", "--threads", "--workers",
-                      "--cache-mb", "--cache-dir", "--web-root", "--public-url"},
-                     {"--quiet", "--help", "-h"});
+  auto parsed = CliArgs::parse("serve", raw,
+                               {"--coast", "--params", "--seed", "--host", "--port", "--threads",
+                                "--workers", "--cache-mb", "--cache-dir", "--web-root",
+                                "--public-url", "--max-client-connections"},
+                               {"--quiet", "--help", "-h"});
   if (!parsed)
     return usageError(parsed.error(), kServeUsage);
   const CliArgs& args = parsed.value();
@@ -115,7 +119,8 @@ int runServe(const std::vector<std::string>& raw) {
   auto threads = args.getInt("--threads", 1, 64);
   auto workers = args.getInt("--workers", 1, 256);
   auto cacheMb = args.getInt("--cache-mb", 1, 1 << 20);
-  for (const auto* r : {&port, &threads, &workers, &cacheMb})
+  auto perClient = args.getInt("--max-client-connections", 0, 1 << 20);
+  for (const auto* r : {&port, &threads, &workers, &cacheMb, &perClient})
     if (!*r)
       return usageError(r->error(), kServeUsage);
   std::string publicUrl;
@@ -153,6 +158,8 @@ int runServe(const std::vector<std::string>& raw) {
   http.port = static_cast<std::uint16_t>(port.value().value_or(8080));
   http.ioThreads = static_cast<int>(threads.value().value_or(cores));
   http.accessLog = !args.has("--quiet");
+  if (perClient.value())
+    http.maxConnectionsPerClient = static_cast<std::size_t>(*perClient.value());
   http::Server server(
       http,
       [&tiles](const http::Request& r, std::function<void(http::Response)> done) {
