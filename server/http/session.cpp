@@ -43,9 +43,11 @@ bool isParseError(const ErrorCode& ec) {
 }
 
 Request makeRequest(const bhttp::request_header<>& header, bool head,
-                    const std::string& localAddress) {
+                    const std::string& localAddress,
+                    const std::shared_ptr<std::atomic<bool>>& clientGone) {
   Request request;
   request.localAddress = localAddress;
+  request.clientGone = clientGone;
   request.method = "GET";
   request.head = head;
   request.target = std::string(header.target());
@@ -111,6 +113,7 @@ void Session::closeNow() noexcept {
   if (closed_)
     return;
   closed_ = closing_ = true;
+  clientGone_->store(true, std::memory_order_relaxed);
   ErrorCode ignored;
   socket_.shutdown(tcp::socket::shutdown_both, ignored);
   socket_.close(ignored);
@@ -226,7 +229,12 @@ void Session::onReadFailed(const ErrorCode& ec) {
   if (!lingering_ && isParseError(ec))
     return answerParseError(ec);
   // The peer closed or reset the connection, or it timed out: answer what is owed, then close.
+  // A peer that closed is most likely gone (a browser cancelling tile requests closes the
+  // connection): work queued for it may be skipped. Only a client that half-closes and still
+  // reads loses by this (it gets 503), as with nginx's default for proxied requests.
   closing_ = true;
+  if (!queue_.empty())
+    clientGone_->store(true, std::memory_order_relaxed);
   if (lingering_)
     return closeNow();
   closeIfIdle();
@@ -243,7 +251,7 @@ void Session::dispatch() {
   if (!exchange.keepAlive)
     closing_ = true;
   if (verdict.kind == Verdict::Kind::kForward)
-    return callHandler(exchange.sequence, makeRequest(header, head, localAddress_));
+    return callHandler(exchange.sequence, makeRequest(header, head, localAddress_, clientGone_));
   answer(exchange.sequence, std::move(verdict.response));
 }
 

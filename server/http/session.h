@@ -134,6 +134,9 @@ private:
   std::deque<Exchange> queue_; ///< Requests whose responses are owed, in order.
   std::string localAddress_;   ///< Request::localAddress of every request on this connection.
   std::string client_;         ///< The clientKey() of the peer's address.
+  /// Request::clientGone of every request on this connection; set by closeNow() and when the
+  /// peer ends or resets the connection while responses are owed.
+  std::shared_ptr<std::atomic<bool>> clientGone_ = std::make_shared<std::atomic<bool>>(false);
   std::atomic<Ticks> sheddableSince_{0};
   std::string head_; ///< Header block of the response being written.
   std::uint64_t nextSequence_ = 0;

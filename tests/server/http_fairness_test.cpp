@@ -96,6 +96,24 @@ TEST(HttpFairness, AtTheCapTheOldestIdleConnectionIsShedAndBusyOnesAreKept) {
   EXPECT_EQ(hung->status, 200);
 }
 
+TEST(HttpFairness, ARequestKnowsWhenItsClientHasGone) {
+  TestServer server;
+  Connection leaving(server.port());
+  Connection staying(server.port());
+  ASSERT_TRUE(leaving.send(getRequest("/hang")));
+  ASSERT_TRUE(staying.send(getRequest("/hang")));
+  ASSERT_TRUE(eventually([&] { return server.hungCount() == 2; }, 1000ms));
+  EXPECT_EQ(server.hungClientsGone(), 0);
+  leaving.close(); // e.g. a browser cancelling a tile request
+  EXPECT_TRUE(eventually([&] { return server.hungClientsGone() == 1; }, 1000ms));
+  std::this_thread::sleep_for(50ms);
+  EXPECT_EQ(server.hungClientsGone(), 1) << "the client still waiting is not gone";
+  server.releaseHung();
+  const auto response = staying.read();
+  ASSERT_TRUE(response);
+  EXPECT_EQ(response->status, 200);
+}
+
 TEST(HttpFairness, AHeaderTimeoutIsAnswered408ThenClosed) {
   ServerOptions options = testOptions();
   options.headerTimeout = 300ms;
