@@ -10,6 +10,7 @@
 
 #include "strahler/store/world_file.h"
 
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -19,12 +20,18 @@
 namespace strahler::app {
 namespace {
 
+/// How long SIGINT/SIGTERM lets requests in flight finish before every connection is closed.
+/// Queued tile computations are dropped at once (503), so the process exits within about this
+/// plus 0.3 s plus the longest single tile computation still running at the deadline;
+/// docker/compose.yaml's stop_grace_period (10 s) stays above it.
+constexpr std::chrono::milliseconds kDrainWindow{4000};
+
 constexpr const char* kServeUsage =
     "usage: strahler serve [WORLD.world ...] [--coast FILE.geojson [--params FILE.json] [--seed "
     "N]]\n"
     "                      [--host 127.0.0.1] [--port 8080] [--threads N] [--workers N]\n"
     "                      [--cache-mb M] [--cache-dir DIR] [--web-root DIR] [--public-url URL]\n"
-    "                      [--quiet]\n"
+    "                      [--max-client-connections N] [--quiet]\n"
     "Serves worlds over HTTP: the viewer at /, TileJSON, Web Mercator and local tiles in every\n"
     "format, rivers.geojson, /health and /metrics. Without a world it loads (or generates)\n"
     "the world of --coast, or of the default island. SIGINT/SIGTERM drain and stop it.\n"
@@ -32,7 +39,13 @@ constexpr const char* kServeUsage =
     "the world and a few tens of MB of working memory.\n"
     "--public-url URL (http[s]://host[:port][/prefix]) is the base of absolute URLs (TileJSON's\n"
     "tiles) behind a proxy; without it they use the address the client connected to, never\n"
-    "the Host header.\n";
+    "the Host header.\n"
+    "--max-client-connections N (default 64) caps the connections of one client address (IPv6:\n"
+    "one /64) among the 1,024 the server holds; at a cap the oldest idle or header-incomplete\n"
+    "connection is closed to make room, else the new one gets 503. 0: no per-client cap (behind\n"
+    "a proxy, whose address every connection has). A header not complete in 10 s gets 408.\n"
+    "SIGINT/SIGTERM: queued tiles get 503, tiles being computed are sent, and the process\n"
+    "exits within the 4 s drain window (plus the longest tile still being computed).\n";
 
 /// A URL-safe world id from a name: [A-Za-z0-9_-], unique among `taken`.
 std::string worldId(const std::string& name, std::set<std::string>& taken) {
@@ -91,11 +104,11 @@ std::string findWebRoot(const CliArgs& args) {
 } // namespace
 
 int runServe(const std::vector<std::string>& raw) {
-  auto parsed =
-      CliArgs::parse("serve", raw,
-                     {"--coast", "--params", "--seed", "--host", "--port", "--threads", "--workers",
-                      "--cache-mb", "--cache-dir", "--web-root", "--public-url"},
-                     {"--quiet", "--help", "-h"});
+  auto parsed = CliArgs::parse("serve", raw,
+                               {"--coast", "--params", "--seed", "--host", "--port", "--threads",
+                                "--workers", "--cache-mb", "--cache-dir", "--web-root",
+                                "--public-url", "--max-client-connections"},
+                               {"--quiet", "--help", "-h"});
   if (!parsed)
     return usageError(parsed.error(), kServeUsage);
   const CliArgs& args = parsed.value();
@@ -106,7 +119,8 @@ int runServe(const std::vector<std::string>& raw) {
   auto threads = args.getInt("--threads", 1, 64);
   auto workers = args.getInt("--workers", 1, 256);
   auto cacheMb = args.getInt("--cache-mb", 1, 1 << 20);
-  for (const auto* r : {&port, &threads, &workers, &cacheMb})
+  auto perClient = args.getInt("--max-client-connections", 0, 1 << 20);
+  for (const auto* r : {&port, &threads, &workers, &cacheMb, &perClient})
     if (!*r)
       return usageError(r->error(), kServeUsage);
   std::string publicUrl;
@@ -144,6 +158,8 @@ int runServe(const std::vector<std::string>& raw) {
   http.port = static_cast<std::uint16_t>(port.value().value_or(8080));
   http.ioThreads = static_cast<int>(threads.value().value_or(cores));
   http.accessLog = !args.has("--quiet");
+  if (perClient.value())
+    http.maxConnectionsPerClient = static_cast<std::size_t>(*perClient.value());
   http::Server server(
       http,
       [&tiles](const http::Request& r, std::function<void(http::Response)> done) {
@@ -165,7 +181,10 @@ int runServe(const std::vector<std::string>& raw) {
   sigwait(&stopSignals, &signal);
   std::printf("strahler: %s received, draining\n", signal == SIGTERM ? "SIGTERM" : "SIGINT");
   std::fflush(stdout);
-  server.stop(std::chrono::milliseconds(4000));
+  // Nobody would receive the queued tiles: drop them first (503, Retry-After), so that only
+  // the computations already running delay the exit.
+  tiles.cancelQueued();
+  server.stop(kDrainWindow);
   tiles.drain();
   return 0;
 }

@@ -161,6 +161,10 @@ void TileServer::drain() {
   pool_.drain();
 }
 
+void TileServer::cancelQueued() {
+  pool_.cancelQueued();
+}
+
 std::vector<std::string> TileServer::worldIds() const {
   std::vector<std::string> ids;
   for (const auto& w : worlds_)
@@ -199,6 +203,9 @@ std::string TileServer::gauges() const {
         "counter", double(s.computations));
   gauge("strahler_tile_requests_coalesced_total",
         "Requests that waited for a computation in flight.", "counter", double(s.coalesced));
+  gauge("strahler_tile_computations_cancelled_total",
+        "Queued tile computations skipped because every client of the tile had gone.", "counter",
+        double(s.cancelled));
   gauge("strahler_worker_queue_depth", "Tile computations waiting for a worker.", "gauge",
         double(pool_.queued()));
   gauge("strahler_workers_busy", "Workers computing a tile.", "gauge", double(pool_.running()));
@@ -386,7 +393,8 @@ void TileServer::tile(const ServedWorld& w, const std::vector<std::string>& s,
           return done(std::move(r));
         }
         done(tileResponse(outcome.tile));
-      });
+      },
+      request.clientGone);
 }
 
 } // namespace strahler::app

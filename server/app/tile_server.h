@@ -49,6 +49,9 @@ public:
   void observe(const std::string& route, int status, std::size_t bytes, double ms);
   /// Waits for queued tile computations to finish (graceful shutdown).
   void drain();
+  /// Shutdown: drops the queued tile computations (their requests get 503 with Retry-After)
+  /// and refuses new ones; computations already running finish. Returns at once.
+  void cancelQueued();
 
   /// The world ids served, in order.
   std::vector<std::string> worldIds() const;

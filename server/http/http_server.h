@@ -14,16 +14,23 @@ namespace strahler::http {
 /// Limits and timeouts of the HTTP server; every one is enforced.
 struct ServerOptions {
   std::string host = "127.0.0.1";
-  std::uint16_t port = 8080;         ///< 0: an ephemeral port (see Server::port()).
-  int ioThreads = 2;                 ///< Threads running the Asio event loop.
-  std::size_t maxConnections = 1024; ///< Further ones get a 503 (Retry-After: 1) and are closed.
+  std::uint16_t port = 8080; ///< 0: an ephemeral port (see Server::port()).
+  int ioThreads = 2;         ///< Threads running the Asio event loop.
+  /// At the cap a new connection sheds the oldest idle or header-incomplete one (see
+  /// maxConnectionsPerClient); when none is, it gets a 503 (Retry-After: 1) and is closed.
+  std::size_t maxConnections = 1024;
+  /// Connections one client address (IPv6: one /64) may hold; beyond it a new one sheds that
+  /// client's oldest idle or header-incomplete connection, or gets a 503. 0: no limit (behind
+  /// a proxy, whose address every connection has).
+  std::size_t maxConnectionsPerClient = 64;
   std::size_t maxTargetBytes = 2048; ///< Longer request targets get 414.
   std::size_t maxHeaderBytes = 8192; ///< Larger header blocks get 431.
   std::size_t maxPipelined = 16;     ///< Responses queued per connection before reading pauses.
-  std::chrono::milliseconds headerTimeout{10000}; ///< To receive a complete request header.
-  std::chrono::milliseconds idleTimeout{30000};   ///< Keep-alive idle time between requests.
-  std::chrono::milliseconds writeTimeout{30000};  ///< To send one response.
-  bool accessLog = true;                          ///< One line per request on stdout.
+  /// To receive a complete request header; then 408 and close.
+  std::chrono::milliseconds headerTimeout{10000};
+  std::chrono::milliseconds idleTimeout{30000};  ///< Keep-alive idle time between requests.
+  std::chrono::milliseconds writeTimeout{30000}; ///< To send one response.
+  bool accessLog = true;                         ///< One line per request on stdout.
 };
 
 /// An HTTP/1.1 server (Boost.Beast) on its own I/O threads. Protocol rules live here:
@@ -31,8 +38,10 @@ struct ServerOptions {
 /// Allow, 400 for malformed requests, a body on GET, or any Transfer-Encoding other than
 /// "chunked" (and the connection is closed), 414 and 431 for oversize targets and headers,
 /// CORS "*" on every response, keep-alive with in-order pipelining, timeouts so that slow
-/// clients cannot pin connections, back-off when accept fails (EMFILE). Everything else is
-/// the handler's. Beast stays inside server/http.
+/// clients cannot pin connections (a header not complete within headerTimeout gets 408), a
+/// per-client connection limit and shedding of idle connections at the cap so that one client
+/// cannot take them all, back-off when accept fails (EMFILE). Everything else is the
+/// handler's. Beast stays inside server/http.
 /// Decisions where HTTP leaves a choice: a well-formed "HTTP/x.y" other than 1.0 and 1.1 gets
 /// 505; lines ending in a bare LF get 400; the target must be origin-form ("/..."), so
 /// absolute-form and "*" get 400 on GET/HEAD; every 400 closes the connection (the handler's

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <string>
@@ -18,6 +19,10 @@ struct Request {
   /// The address the client connected to, as a URL authority ("127.0.0.1:8080",
   /// "[::1]:8080"): the socket's own local endpoint, never taken from the request.
   std::string localAddress;
+  /// Becomes true once the client has closed or reset its connection (or the server closed
+  /// it): the response can no longer be delivered, so a handler may skip queued work for it.
+  /// Null when there is no connection to watch.
+  std::shared_ptr<const std::atomic<bool>> clientGone;
 
   /// Value of header `name` (lower-case), or empty.
   std::string header(const std::string& name) const {

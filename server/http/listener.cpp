@@ -82,14 +82,27 @@ void Listener::onAccept(ErrorCode ec, Socket socket) {
   failing_ = false;
   if (state_->draining()) {
     refuse(std::move(socket), "the server is shutting down");
-  } else if (state_->connections() >= state_->options().maxConnections) {
-    refuse(std::move(socket), "too many connections; retry later");
-  } else {
-    try {
-      std::make_shared<Session>(state_, std::move(socket))->start();
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "strahler: cannot start a connection: %s\n", e.what());
+    return doAccept();
+  }
+  ErrorCode peerError;
+  const tcp::endpoint peer = socket.remote_endpoint(peerError);
+  if (peerError) // the client has gone already
+    return doAccept();
+  try {
+    std::string client = clientKey(peer.address());
+    switch (state_->admit(client)) {
+    case ServerState::Admission::kRefuseClient:
+      refuse(std::move(socket), "too many connections from your address; retry later");
+      break;
+    case ServerState::Admission::kRefuseFull:
+      refuse(std::move(socket), "too many connections; retry later");
+      break;
+    case ServerState::Admission::kAccept:
+      std::make_shared<Session>(state_, std::move(socket), std::move(client))->start();
+      break;
     }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "strahler: cannot start a connection: %s\n", e.what());
   }
   doAccept();
 }

@@ -15,9 +15,11 @@ namespace strahler::http::detail {
 /// listening socket stays readable, so retrying at once would spin.
 inline constexpr std::chrono::milliseconds kAcceptRetryDelay{50};
 
-/// Accepts connections and starts a Session for each; beyond maxConnections, or while the server
-/// drains, a connection gets a 503 with Retry-After: 1 and is closed at once. Runs on the first
-/// I/O thread; connections go to the I/O threads in turn.
+/// Accepts connections and starts a Session for each. At maxConnections, or at
+/// maxConnectionsPerClient for the client's address, the oldest idle or header-incomplete
+/// connection (the client's own at its limit) is shed to make room (ServerState::admit()); when
+/// none is, and while the server drains, a connection gets a 503 with Retry-After: 1 and is
+/// closed at once. Runs on the first I/O thread; connections go to the I/O threads in turn.
 class Listener : public std::enable_shared_from_this<Listener> {
 public:
   /// A listener whose sessions share `state`.

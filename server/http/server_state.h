@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <string_view>
 #include <unordered_map>
 #include <utility>
@@ -21,6 +22,10 @@
 namespace strahler::http::detail {
 
 class Session;
+
+/// The key a client's connections are counted under: its IPv4 address (IPv4-mapped IPv6
+/// too), or the /64 prefix of its IPv6 address (one host usually holds a whole /64).
+std::string clientKey(const net::ip::address& address);
 
 /// What the listener and every session share: options, callbacks, the event loops (one
 /// io_context per I/O thread, so that a connection's handlers run on one thread and need no
@@ -43,8 +48,19 @@ public:
   /// The handler for valid GET/HEAD requests.
   const Handler& handler() const noexcept { return handler_; }
 
-  /// Counts `session` as an open connection until remove() or its destruction.
-  void add(const std::shared_ptr<Session>& session);
+  /// What admit() decided about a new connection.
+  enum class Admission {
+    kAccept,       ///< Start a session (perhaps after shedding an idle one).
+    kRefuseClient, ///< The client holds maxConnectionsPerClient busy connections.
+    kRefuseFull,   ///< maxConnections busy connections are open.
+  };
+  /// Decides on a new connection from `client` (clientKey()). At a cap it sheds the oldest
+  /// sheddable connection (Session::sheddableSince()) of the client, or of anyone at the
+  /// global cap, which then no longer counts, and accepts; refuses when none is sheddable.
+  /// Only from the listener, which calls add() right after kAccept.
+  Admission admit(const std::string& client);
+  /// Counts `session` of `client` as an open connection until remove() or its destruction.
+  void add(const std::shared_ptr<Session>& session, const std::string& client);
   /// Forgets `session` (idempotent) and wakes waitUntilIdle().
   void remove(const Session* session) noexcept;
   /// The sessions still open.
@@ -81,9 +97,22 @@ private:
   std::atomic<std::size_t> nextIoContext_{0};
   std::atomic<std::size_t> connections_{0};
   std::atomic<bool> draining_{false};
-  mutable std::mutex mutex_; ///< Guards sessions_ and gateOpen_.
+  mutable std::mutex mutex_; ///< Guards sessions_, clients_, counted_ and gateOpen_.
   std::condition_variable idle_;
-  std::unordered_map<const Session*, std::weak_ptr<Session>> sessions_;
+  /// An open connection as the registry keeps it.
+  struct Registered {
+    std::weak_ptr<Session> session;
+    std::string client;
+    bool shed = false; ///< Being shed: no longer counted against the caps.
+  };
+  /// Under mutex_: marks the oldest sheddable connection (of `client` unless null) as shed
+  /// and returns it (null when none is sheddable or it is already being destroyed).
+  std::shared_ptr<Session> pickVictim(const std::string* client, bool& found);
+  void uncount(const std::string& client) noexcept;
+
+  std::unordered_map<const Session*, Registered> sessions_;
+  std::unordered_map<std::string, std::size_t> clients_; ///< Counted connections per client.
+  std::size_t counted_ = 0;                              ///< Open connections not being shed.
   bool gateOpen_ = true;
 };
 

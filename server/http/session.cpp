@@ -28,7 +28,8 @@ constexpr std::size_t kReadChunkBytes = 4096;
 constexpr std::size_t kMaxHeaderReadBytes = 65536;
 /// After a closing response the server drains what the client still sends (so that the
 /// kernel does not answer it with a reset that could destroy the response), for at most this
-/// long and this many bytes.
+/// long and this many bytes; shorter while the server drains or the connection was shed (its
+/// descriptor is wanted).
 constexpr Clock::duration kLingerTimeout = std::chrono::milliseconds(500);
 constexpr Clock::duration kDrainingLingerTimeout = std::chrono::milliseconds(100);
 constexpr std::size_t kMaxLingerBytes = 64 * 1024;
@@ -42,9 +43,11 @@ bool isParseError(const ErrorCode& ec) {
 }
 
 Request makeRequest(const bhttp::request_header<>& header, bool head,
-                    const std::string& localAddress) {
+                    const std::string& localAddress,
+                    const std::shared_ptr<std::atomic<bool>>& clientGone) {
   Request request;
   request.localAddress = localAddress;
+  request.clientGone = clientGone;
   request.method = "GET";
   request.head = head;
   request.target = std::string(header.target());
@@ -76,9 +79,10 @@ std::string urlAuthority(const tcp::endpoint& endpoint) {
 
 } // namespace
 
-Session::Session(std::shared_ptr<ServerState> state, Socket socket)
+Session::Session(std::shared_ptr<ServerState> state, Socket socket, std::string client)
     : state_(std::move(state)), options_(state_->options()), socket_(std::move(socket)),
-      executor_(socket_.get_executor()), readDeadline_(executor_), writeDeadline_(executor_) {}
+      executor_(socket_.get_executor()), readDeadline_(executor_), writeDeadline_(executor_),
+      client_(std::move(client)) {}
 
 Session::~Session() {
   state_->remove(this);
@@ -89,7 +93,7 @@ void Session::start() {
   // Responses are written whole (one gather write each); Nagle would only delay pipelined ones.
   socket_.set_option(tcp::no_delay(true), ignored);
   localAddress_ = urlAuthority(socket_.local_endpoint(ignored));
-  state_->add(shared_from_this());
+  state_->add(shared_from_this(), client_);
   net::dispatch(executor_, [self = shared_from_this()] { self->doRead(); });
 }
 
@@ -101,16 +105,22 @@ void Session::forceClose() {
   net::post(executor_, [self = shared_from_this()] { self->closeNow(); });
 }
 
+void Session::shed() {
+  net::post(executor_, [self = shared_from_this()] { self->onShed(); });
+}
+
 void Session::closeNow() noexcept {
   if (closed_)
     return;
   closed_ = closing_ = true;
+  clientGone_->store(true, std::memory_order_relaxed);
   ErrorCode ignored;
   socket_.shutdown(tcp::socket::shutdown_both, ignored);
   socket_.close(ignored);
   cancel(readDeadline_);
   cancel(writeDeadline_);
   queue_.clear();
+  updateSheddable();
   state_->remove(this);
 }
 
@@ -128,14 +138,18 @@ void Session::doRead() {
   parser_->body_limit(std::numeric_limits<std::uint64_t>::max());
   if (buffer_.size() == 0 && !firstRequest_)
     return waitForRequest();
+  readingHeader_ = true;
   arm(readDeadline_, options_.headerTimeout);
   parseBuffered();
+  updateSheddable();
 }
 
 void Session::waitForRequest() {
+  readingHeader_ = false;
   arm(readDeadline_, options_.idleTimeout);
   socket_.async_read_some(buffer_.prepare(kReadChunkBytes),
                           beast::bind_front_handler(&Session::onRequestStart, shared_from_this()));
+  updateSheddable();
 }
 
 void Session::onRequestStart(ErrorCode ec, std::size_t bytes) {
@@ -144,6 +158,7 @@ void Session::onRequestStart(ErrorCode ec, std::size_t bytes) {
   buffer_.commit(bytes);
   if (stopReadingIfClosing())
     return;
+  readingHeader_ = true;
   arm(readDeadline_, options_.headerTimeout);
   parseBuffered();
 }
@@ -183,11 +198,12 @@ void Session::onMoreRead(ErrorCode ec, std::size_t bytes) {
 }
 
 void Session::onHeader() {
-  reading_ = false;
+  reading_ = readingHeader_ = false;
   disarm(readDeadline_);
   firstRequest_ = false;
   dispatch();
   doRead();
+  updateSheddable();
 }
 
 /// A read completed after the session decided to stop reading (drain, close, linger): the
@@ -206,14 +222,19 @@ bool Session::stopReadingIfClosing() {
 }
 
 void Session::onReadFailed(const ErrorCode& ec) {
-  reading_ = false;
+  reading_ = readingHeader_ = false;
   disarm(readDeadline_);
   if (closed_)
     return;
   if (!lingering_ && isParseError(ec))
     return answerParseError(ec);
   // The peer closed or reset the connection, or it timed out: answer what is owed, then close.
+  // A peer that closed is most likely gone (a browser cancelling tile requests closes the
+  // connection): work queued for it may be skipped. Only a client that half-closes and still
+  // reads loses by this (it gets 503), as with nginx's default for proxied requests.
   closing_ = true;
+  if (!queue_.empty())
+    clientGone_->store(true, std::memory_order_relaxed);
   if (lingering_)
     return closeNow();
   closeIfIdle();
@@ -230,7 +251,7 @@ void Session::dispatch() {
   if (!exchange.keepAlive)
     closing_ = true;
   if (verdict.kind == Verdict::Kind::kForward)
-    return callHandler(exchange.sequence, makeRequest(header, head, localAddress_));
+    return callHandler(exchange.sequence, makeRequest(header, head, localAddress_, clientGone_));
   answer(exchange.sequence, std::move(verdict.response));
 }
 
@@ -313,6 +334,7 @@ void Session::answer(std::uint64_t sequence, Response response) {
   exchange.route = response.route;
   exchange.message.emplace(toWireResponse(std::move(response), exchange.version, exchange.head));
   maybeWrite();
+  updateSheddable();
 }
 
 // ---- writing -------------------------------------------------------------------------------
@@ -353,6 +375,7 @@ void Session::onWrite(ErrorCode ec) {
   if (closing_)
     return closeIfIdle();
   doRead(); // resumes reading if the pipelining cap had paused it
+  updateSheddable();
 }
 
 void Session::record(const Exchange& exchange, bool sent) noexcept {
@@ -367,10 +390,11 @@ void Session::record(const Exchange& exchange, bool sent) noexcept {
 /// unread request bytes do not turn the close into a reset that could discard the response.
 void Session::linger() {
   closing_ = lingering_ = true;
+  updateSheddable();
   queue_.clear(); // requests pipelined after a closing response are not answered
   ErrorCode ignored;
   socket_.shutdown(tcp::socket::shutdown_send, ignored);
-  arm(readDeadline_, state_->draining() ? kDrainingLingerTimeout : kLingerTimeout);
+  arm(readDeadline_, state_->draining() || shed_ ? kDrainingLingerTimeout : kLingerTimeout);
   if (!reading_)
     discard(); // otherwise the pending read's completion closes
 }
@@ -397,7 +421,42 @@ void Session::onDrain() {
   if (closed_)
     return;
   closing_ = true;
+  updateSheddable();
   closeIfIdle(); // otherwise the last owed response goes out with Connection: close
+}
+
+void Session::onShed() {
+  if (closed_)
+    return;
+  shed_ = true;
+  if (closing_ || writing_ || !queue_.empty()) // it got busy meanwhile: finish, then close
+    return onDrain();
+  if (readingHeader_ && (buffer_.size() > 0 || (parser_ && parser_->got_some())))
+    return answerAndClose(503, "too many connections: this one had the oldest incomplete "
+                               "request header; retry later");
+  closeNow(); // idle: a client reopens a closed keep-alive connection by itself
+}
+
+/// Answers the request whose header is being read with `status` and closes; the pending read
+/// completes into the linger that follows the response.
+void Session::answerAndClose(int status, const std::string& message) {
+  const auto& header = parser_->get();
+  const Exchange& exchange =
+      enqueue(toStd(header.method_string()), toStd(header.target()), 11, false, false);
+  closing_ = true;
+  Response response = errorResponse(status, message);
+  if (status == 503)
+    response.headers.emplace_back("Retry-After", "1");
+  answer(exchange.sequence, std::move(response));
+}
+
+void Session::updateSheddable() noexcept {
+  const bool sheddable =
+      reading_ && !closing_ && !lingering_ && !closed_ && !writing_ && queue_.empty();
+  if (sheddable == (sheddableSince_.load(std::memory_order_relaxed) != 0))
+    return;
+  const Ticks now = std::max<Ticks>(1, Clock::now().time_since_epoch().count());
+  sheddableSince_.store(sheddable ? now : 0, std::memory_order_relaxed);
 }
 
 // ---- timers --------------------------------------------------------------------------------
@@ -443,6 +502,9 @@ void Session::onReadTimeout() {
   // A client waiting for owed responses is not slow: only an idle connection times out.
   if (!lingering_ && !queue_.empty())
     return arm(readDeadline_, readDeadline_.timeout);
+  if (readingHeader_ && !closing_) // an idle keep-alive connection closes without a word
+    return answerAndClose(408, "request header not complete within " +
+                                   std::to_string(options_.headerTimeout.count()) + " ms");
   closeNow();
 }
 

@@ -8,6 +8,7 @@
 #include <boost/beast/core/flat_buffer.hpp>
 #include <boost/optional/optional.hpp>
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <deque>
@@ -32,8 +33,12 @@ namespace strahler::http::detail {
 /// before its deadline sleeps again, so a busy connection does not touch them per request.
 class Session : public std::enable_shared_from_this<Session> {
 public:
-  /// A session for an accepted `socket`, on the I/O thread that runs its executor.
-  Session(std::shared_ptr<ServerState> state, Socket socket);
+  /// Steady-clock ticks (since its epoch).
+  using Ticks = std::chrono::steady_clock::rep;
+
+  /// A session for an accepted `socket` of `client` (clientKey()), on the I/O thread that runs
+  /// its executor.
+  Session(std::shared_ptr<ServerState> state, Socket socket, std::string client);
   ~Session();
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
@@ -46,6 +51,12 @@ public:
   void forceClose();
   /// Closes the connection now. Only on the session's thread, or when no I/O thread runs.
   void closeNow() noexcept;
+  /// Makes room for a new connection: an idle connection closes at once, one with a header
+  /// begun gets 503 (Retry-After: 1) and closes, one that owes responses drains.
+  void shed();
+  /// When the connection became sheddable (waiting for a request or its header, nothing owed),
+  /// or 0 while it is not. Any thread.
+  Ticks sheddableSince() const noexcept { return sheddableSince_.load(std::memory_order_relaxed); }
 
 private:
   using Clock = std::chrono::steady_clock;
@@ -101,6 +112,9 @@ private:
   void discard();
   void closeIfIdle();
   void onDrain();
+  void onShed();
+  void answerAndClose(int status, const std::string& message);
+  void updateSheddable() noexcept;
 
   void arm(Deadline& deadline, Duration timeout);
   void wait(Deadline& deadline);
@@ -119,14 +133,21 @@ private:
   boost::optional<RequestParser> parser_;
   std::deque<Exchange> queue_; ///< Requests whose responses are owed, in order.
   std::string localAddress_;   ///< Request::localAddress of every request on this connection.
-  std::string head_;           ///< Header block of the response being written.
+  std::string client_;         ///< The clientKey() of the peer's address.
+  /// Request::clientGone of every request on this connection; set by closeNow() and when the
+  /// peer ends or resets the connection while responses are owed.
+  std::shared_ptr<std::atomic<bool>> clientGone_ = std::make_shared<std::atomic<bool>>(false);
+  std::atomic<Ticks> sheddableSince_{0};
+  std::string head_; ///< Header block of the response being written.
   std::uint64_t nextSequence_ = 0;
   std::size_t discarded_ = 0; ///< Bytes thrown away while lingering.
   bool firstRequest_ = true;
-  bool reading_ = false;   ///< A read (idle wait, header or discard) is pending.
-  bool writing_ = false;   ///< A write is pending.
-  bool closing_ = false;   ///< Read no further requests; close once the queue is empty.
-  bool lingering_ = false; ///< Final response sent, send side shut down; waiting for EOF.
+  bool reading_ = false;       ///< A read (idle wait, header or discard) is pending.
+  bool readingHeader_ = false; ///< That read is of a request header (not an idle wait).
+  bool writing_ = false;       ///< A write is pending.
+  bool closing_ = false;       ///< Read no further requests; close once the queue is empty.
+  bool lingering_ = false;     ///< Final response sent, send side shut down; waiting for EOF.
+  bool shed_ = false;          ///< Closed to make room for another connection (short linger).
   bool closed_ = false;
 };
 

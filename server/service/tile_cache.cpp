@@ -33,6 +33,7 @@ std::size_t heapBytes(const std::string& text) noexcept {
 /// whether the flight it belongs to is still the one registered for its key.
 struct Flight {
   std::vector<Callback> waiters;
+  std::vector<TileCache::Gone> gone; ///< Beside waiters; null for a waiter never gone.
 };
 
 struct Entry {
@@ -102,17 +103,39 @@ struct CacheCore {
 
   /// Under the lock: adds `callback` to the flight of `key`. Returns the flight when this
   /// call started it (the caller must schedule it), null when it joined one in progress.
-  std::shared_ptr<Flight> join(const std::string& key, Callback&& callback) {
+  std::shared_ptr<Flight> join(const std::string& key, Callback&& callback,
+                               TileCache::Gone&& gone) {
     ++counters.misses;
     std::shared_ptr<Flight>& flight = flights[key];
-    if (flight) {
+    const bool joined = flight != nullptr;
+    if (!joined) {
+      flight = std::make_shared<Flight>();
+    }
+    flight->waiters.push_back(std::move(callback));
+    flight->gone.push_back(std::move(gone));
+    if (joined) {
       ++counters.coalesced;
-      flight->waiters.push_back(std::move(callback));
       return nullptr;
     }
-    flight = std::make_shared<Flight>();
-    flight->waiters.push_back(std::move(callback));
     return flight;
+  }
+
+  /// Answers the waiters of `flight` with 503 instead of computing when every one of them is
+  /// gone; true when it did (or the flight was already answered).
+  bool cancelIfNobodyWaits(const std::string& key, const std::shared_ptr<Flight>& flight) {
+    std::vector<Callback> waiters;
+    {
+      std::lock_guard lock(mutex);
+      for (const TileCache::Gone& gone : flight->gone) {
+        if (!gone || !gone->load(std::memory_order_relaxed)) {
+          return false;
+        }
+      }
+      waiters = takeWaiters(key, flight);
+      ++counters.cancelled;
+    }
+    (void)deliver(waiters, errorOutcome(503, "every client of this tile has gone"));
+    return true;
   }
 
   /// Under the lock: the waiters of `flight`, unregistering it; none when it is no longer
@@ -202,7 +225,7 @@ public:
 
   /// Computes the tile and answers the waiters; only the first call does anything.
   void run() {
-    if (ran_.exchange(true)) {
+    if (ran_.exchange(true) || core_->cancelIfNobodyWaits(key_, flight_)) {
       return;
     }
     core_->finish(key_, flight_, computeSafely(compute_));
@@ -266,7 +289,7 @@ TileCache::TileCache(std::size_t maxBytes)
 TileCache::~TileCache() = default;
 
 void TileCache::get(const std::string& key, const Compute& compute, const Schedule& schedule,
-                    Callback callback) {
+                    Callback callback, Gone gone) {
   CacheCore& core = *impl_->core;
   std::shared_ptr<const CachedTile> hit;
   std::shared_ptr<Flight> started;
@@ -274,7 +297,7 @@ void TileCache::get(const std::string& key, const Compute& compute, const Schedu
     std::lock_guard lock(core.mutex);
     hit = core.lookup(key);
     if (!hit) {
-      started = core.join(key, std::move(callback));
+      started = core.join(key, std::move(callback), std::move(gone));
     }
   }
   if (hit) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -35,6 +36,7 @@ struct TileCacheStats {
   std::size_t computations = 0; ///< Times a tile was actually computed.
   std::size_t errors = 0;       ///< Computations that ended in an error (not cached).
   std::size_t refused = 0;      ///< Requests answered 503 because the work was not scheduled.
+  std::size_t cancelled = 0;    ///< Computations skipped because every requester had gone.
 };
 
 /// A byte-bounded LRU of encoded tiles with single flight: concurrent requests for the same
@@ -51,6 +53,8 @@ public:
   using Compute = std::function<Outcome()>;
   /// Receives the outcome; may run on the computing thread.
   using Callback = std::function<void(const Outcome&)>;
+  /// True once a requester is gone (its answer can no longer be delivered); null: never.
+  using Gone = std::shared_ptr<const std::atomic<bool>>;
   /// Hands a computation to a worker; returns false when it cannot be queued (overload).
   /// Work destroyed without being run (e.g. by WorkerPool's destructor) answers 503.
   using Schedule = std::function<bool(std::function<void()> work)>;
@@ -67,9 +71,10 @@ public:
   /// Each callback is called exactly once, never under the cache lock (it may use the cache
   /// again); if one throws, the others are still called and the first exception propagates to
   /// whoever ran the work (swallowed for 503 answers). The work holds the cache state alive,
-  /// so a TileCache may be destroyed while its computations are still queued.
+  /// so a TileCache may be destroyed while its computations are still queued. When the work
+  /// runs and every waiter's `gone` is set, nothing is computed: they get 503 (cancelled).
   void get(const std::string& key, const Compute& compute, const Schedule& schedule,
-           Callback callback);
+           Callback callback, Gone gone = nullptr);
 
   /// The cached tile of `key`, now the most recently used, counted as a hit; null (and not
   /// counted) when it is not cached. A cheap first try for get(), which counts the miss.

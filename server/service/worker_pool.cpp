@@ -139,4 +139,19 @@ void WorkerPool::drain() {
   impl_->idle.wait(lock, [&] { return impl_->queue.empty() && impl_->runningCount == 0; });
 }
 
+std::size_t WorkerPool::cancelQueued() {
+  std::deque<std::function<void()>> dropped;
+  {
+    std::lock_guard lock(impl_->mutex);
+    impl_->accepting = false;
+    dropped.swap(impl_->queue);
+    if (impl_->runningCount == 0) {
+      impl_->idle.notify_all();
+    }
+  }
+  const std::size_t count = dropped.size();
+  dropped.clear(); // Outside the lock: a dropped task's captures may call back into the pool.
+  return count;
+}
+
 } // namespace strahler::service

@@ -30,6 +30,11 @@ public:
   /// Stops taking tasks, waits for queued and running tasks to finish. Not from a task of
   /// this pool (it would wait for itself).
   void drain();
+  /// Stops taking tasks and destroys the queued ones unrun, on the calling thread (a task's
+  /// captures answer its requester on destruction); running tasks go on. Returns at once;
+  /// drain() then waits only for the running ones. For shutdown: nobody would get the rest.
+  /// Returns the number of tasks dropped.
+  std::size_t cancelQueued();
 
 private:
   struct Impl;

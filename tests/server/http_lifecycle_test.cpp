@@ -79,16 +79,16 @@ TEST(HttpServer, ClientThatStopsReadingIsCutOffByTheWriteTimeout) {
   EXPECT_TRUE(eventually([&] { return server.server().connections() == 0; }, 1000ms));
 }
 
-TEST(HttpServer, ConnectionsBeyondTheCapAreRefused) {
+TEST(HttpServer, ConnectionsBeyondTheCapAreRefusedWhenNoneIsIdle) {
   ServerOptions options = testOptions();
   options.maxConnections = 4;
   TestServer server(options);
   std::vector<std::unique_ptr<Connection>> admitted;
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < 4; ++i) { // busy: each waits for its response, so none can be shed
     admitted.push_back(std::make_unique<Connection>(server.port()));
-    ASSERT_TRUE(admitted.back()->send(getRequest("/in")));
-    ASSERT_TRUE(admitted.back()->read()) << i;
+    ASSERT_TRUE(admitted.back()->send(getRequest("/hang")));
   }
+  ASSERT_TRUE(eventually([&] { return server.hungCount() == 4; }, 2000ms));
   EXPECT_EQ(server.server().connections(), 4u);
   for (int i = 0; i < 2; ++i) {
     Connection refused(server.port());
@@ -96,7 +96,11 @@ TEST(HttpServer, ConnectionsBeyondTheCapAreRefused) {
     EXPECT_EQ(bytes.rfind("HTTP/1.1 503 ", 0), 0u) << bytes;
     EXPECT_NE(bytes.find("Retry-After: 1\r\n"), std::string::npos);
   }
+  server.releaseHung();
   for (auto& connection : admitted) { // the admitted ones still work
+    const auto hung = connection->read();
+    ASSERT_TRUE(hung);
+    EXPECT_EQ(hung->status, 200);
     ASSERT_TRUE(connection->send(getRequest("/again")));
     EXPECT_TRUE(connection->read());
   }

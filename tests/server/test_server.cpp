@@ -66,6 +66,14 @@ std::vector<Observation> TestServer::observations() const {
   return observations_;
 }
 
+int TestServer::hungClientsGone() const {
+  std::lock_guard lock(mutex_);
+  int gone = 0;
+  for (const auto& flag : hungGone_)
+    gone += flag && flag->load() ? 1 : 0;
+  return gone;
+}
+
 void TestServer::releaseHung() {
   std::vector<std::function<void(Response)>> pending;
   {
@@ -99,6 +107,7 @@ void TestServer::handle(const Request& request, std::function<void(Response)> do
   if (target == "/hang") {
     std::lock_guard lock(mutex_);
     hungDone_.push_back(std::move(done));
+    hungGone_.push_back(request.clientGone);
     ++hung_;
     return;
   }

@@ -52,6 +52,8 @@ public:
   std::vector<Observation> observations() const;
   /// Number of handler calls that reached /hang.
   int hungCount() const { return hung_.load(); }
+  /// Number of /hang requests whose Request::clientGone is set now.
+  int hungClientsGone() const;
   /// Number of handler calls so far.
   int handlerCalls() const { return calls_.load(); }
   /// Calls the `done` of every /hang request with 200 (the server may be stopped by then).
@@ -65,6 +67,7 @@ private:
   std::vector<std::thread> workers_;
   std::vector<Observation> observations_;
   std::vector<std::function<void(Response)>> hungDone_;
+  std::vector<std::shared_ptr<const std::atomic<bool>>> hungGone_;
   std::atomic<int> hung_{0};
   std::atomic<int> calls_{0};
   Server server_;

@@ -48,7 +48,8 @@ std::size_t RawResponse::count(std::string_view name) const {
       headers.begin(), headers.end(), [&](const auto& field) { return field.first == name; }));
 }
 
-Connection::Connection(std::uint16_t port, std::chrono::milliseconds timeout, int receiveBuffer)
+Connection::Connection(std::uint16_t port, std::chrono::milliseconds timeout, int receiveBuffer,
+                       const std::string& sourceAddress)
     : timeout_(timeout) {
   const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
   if (fd < 0)
@@ -58,6 +59,15 @@ Connection::Connection(std::uint16_t port, std::chrono::milliseconds timeout, in
   const timeval tv = toTimeval(timeout);
   ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
   ::setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &tv, sizeof tv);
+  if (!sourceAddress.empty()) {
+    sockaddr_in source{};
+    source.sin_family = AF_INET;
+    if (::inet_pton(AF_INET, sourceAddress.c_str(), &source.sin_addr) != 1 ||
+        ::bind(fd, reinterpret_cast<const sockaddr*>(&source), sizeof source) != 0) {
+      ::close(fd);
+      return;
+    }
+  }
   sockaddr_in address{};
   address.sin_family = AF_INET;
   address.sin_port = htons(port);
@@ -201,8 +211,9 @@ std::string getRequest(std::string_view target, std::string_view extraHeaders) {
 }
 
 std::optional<RawResponse> fetch(std::uint16_t port, std::string_view request,
-                                 std::chrono::milliseconds timeout) {
-  Connection connection(port, timeout);
+                                 std::chrono::milliseconds timeout,
+                                 const std::string& sourceAddress) {
+  Connection connection(port, timeout, 0, sourceAddress);
   if (!connection.send(request))
     return std::nullopt;
   return connection.read(request.substr(0, 5) == "HEAD ");

@@ -29,9 +29,11 @@ struct RawResponse {
 class Connection {
 public:
   /// Connects to 127.0.0.1:`port`; `receiveBuffer` > 0 sets SO_RCVBUF before connecting.
+  /// A non-empty `sourceAddress` (e.g. "127.0.0.2", which Linux routes on loopback) is bound
+  /// as the client's own address, so that one test can be several clients.
   explicit Connection(std::uint16_t port,
                       std::chrono::milliseconds timeout = std::chrono::milliseconds(5000),
-                      int receiveBuffer = 0);
+                      int receiveBuffer = 0, const std::string& sourceAddress = {});
   ~Connection();
   Connection(const Connection&) = delete;
   Connection& operator=(const Connection&) = delete;
@@ -66,11 +68,12 @@ private:
 
 /// "GET `target` HTTP/1.1" with a Host header and `extraHeaders` (each ending in CRLF).
 std::string getRequest(std::string_view target, std::string_view extraHeaders = {});
-/// Sends `request` on a fresh connection and reads one response, each step bounded by
-/// `timeout`.
+/// Sends `request` on a fresh connection (from `sourceAddress` when not empty) and reads one
+/// response, each step bounded by `timeout`.
 std::optional<RawResponse>
 fetch(std::uint16_t port, std::string_view request,
-      std::chrono::milliseconds timeout = std::chrono::milliseconds(5000));
+      std::chrono::milliseconds timeout = std::chrono::milliseconds(5000),
+      const std::string& sourceAddress = {});
 
 /// Reads one line from a pipe (a child process's output), without its newline; empty at end of
 /// file.

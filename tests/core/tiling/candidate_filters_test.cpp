@@ -81,7 +81,8 @@ TEST(CandidateFilters, DiscsMeetingABoxAreKeptInOrderOnEveryInstructionSet) {
   }
   terrain[40].center = {1000.0, 250.0}; // on the box's corner and edges
   terrain[41].center = {-500.0, 0.0};
-  terrain[42] = {{1500.0, 250.0}, 500.0};
+  terrain[42].center = {1500.0, 250.0};
+  terrain[42].radius = 500.0;
   const TerrainDiscs discs(terrain);
   const std::vector<Aabb> boxes{{{-500.0, -250.0}, {1000.0, 250.0}}, {{0.0, 0.0}, {0.0, 0.0}}, {}};
   for (const InstructionSet set : availableSets())

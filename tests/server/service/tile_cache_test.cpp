@@ -301,6 +301,41 @@ TEST(TileCache, WorkDroppedUnrunAnswers503Once) {
   EXPECT_EQ(cache.stats().inFlight, 0u);
 }
 
+TEST(TileCache, QueuedWorkWhoseRequestersAllLeftIsNotComputed) {
+  OutcomeLog log;
+  TileCache cache(10000);
+  ManualScheduler scheduler;
+  int calls = 0;
+  const TileCache::Compute compute = [&] {
+    ++calls;
+    return TileCache::Outcome{makeTile(10), 0, {}};
+  };
+  auto first = std::make_shared<std::atomic<bool>>(false);
+  auto second = std::make_shared<std::atomic<bool>>(false);
+  cache.get("gone", compute, scheduler.schedule(), log.callback(), first);
+  cache.get("gone", compute, scheduler.schedule(), log.callback(), second);
+  cache.get("half", compute, scheduler.schedule(), log.callback(), first);
+  cache.get("half", compute, scheduler.schedule(), log.callback(), nullptr); // never gone
+  *first = true;
+  *second = true;
+  scheduler.runNext(); // "gone": both requesters left before a worker took it
+  EXPECT_EQ(calls, 0);
+  scheduler.runNext(); // "half": one is still there
+  EXPECT_EQ(calls, 1);
+  const auto outcomes = log.outcomes();
+  ASSERT_EQ(outcomes.size(), 4u);
+  EXPECT_EQ(outcomes[0].errorStatus, 503);
+  EXPECT_EQ(outcomes[1].errorStatus, 503);
+  EXPECT_NE(outcomes[2].tile, nullptr);
+  EXPECT_NE(outcomes[3].tile, nullptr);
+  const TileCacheStats stats = cache.stats();
+  EXPECT_EQ(stats.cancelled, 1u);
+  EXPECT_EQ(stats.computations, 1u);
+  EXPECT_EQ(stats.inFlight, 0u);
+  EXPECT_EQ(fetch(cache, "gone", 10, &calls), fetch(cache, "gone", 10, &calls))
+      << "a cancelled key is computed for the next request";
+}
+
 TEST(TileCache, WorkDroppedByADestroyedPoolAnswers503) {
   OutcomeLog log;
   Watchdog watchdog("pool destroyed with queued tile work");

@@ -52,6 +52,47 @@ TEST(WorkerPool, RunsTasksConcurrentlyOnItsThreads) {
   EXPECT_EQ(ids.count(std::this_thread::get_id()), 0u);
 }
 
+TEST(WorkerPool, CancelQueuedDropsWaitingTasksAndLetsRunningOnesFinish) {
+  Watchdog watchdog("cancel queued");
+  WorkerPool pool(1, 8);
+  std::latch started(1);
+  std::latch release(1);
+  std::atomic<int> ran{0};
+  std::atomic<int> destroyedUnrun{0};
+  /// Counts its destruction when it was never run (what the tile cache's ticket answers 503 on).
+  struct Probe {
+    explicit Probe(std::atomic<int>* counter) : destroyedUnrun(counter) {}
+    Probe(const Probe&) = delete;
+    Probe& operator=(const Probe&) = delete;
+    std::atomic<int>* destroyedUnrun;
+    bool ran = false;
+    ~Probe() {
+      if (!ran)
+        ++*destroyedUnrun;
+    }
+  };
+  ASSERT_TRUE(pool.submit([&] {
+    started.count_down();
+    release.wait();
+    ++ran;
+  }));
+  started.wait();
+  for (int i = 0; i < 5; ++i) {
+    auto probe = std::make_shared<Probe>(&destroyedUnrun);
+    ASSERT_TRUE(pool.submit([&, probe] {
+      probe->ran = true;
+      ++ran;
+    }));
+  }
+  EXPECT_EQ(pool.cancelQueued(), 5u);
+  EXPECT_EQ(destroyedUnrun.load(), 5);
+  EXPECT_EQ(pool.queued(), 0u);
+  EXPECT_EQ(pool.running(), 1u);
+  EXPECT_FALSE(pool.submit([] {})) << "a cancelled pool takes no new task";
+  drainWhileHeld(pool, release);
+  EXPECT_EQ(ran.load(), 1);
+}
+
 TEST(WorkerPool, RefusesTasksBeyondTheQueueCap) {
   Watchdog watchdog("queue cap");
   WorkerPool pool(2, 3);
