@@ -3,6 +3,7 @@
 #include "cli_args.h"
 #include "command_support.h"
 #include "terminal_progress.h"
+#include "world_limits.h"
 #include "world_loader.h"
 #include "world_summary.h"
 
@@ -61,19 +62,22 @@ const char* generateUsage() noexcept {
          "FILE.geojson]\n"
          "                         [--seed N] [--cache-dir DIR] [-o "
          "OUT.world|OUT.geojson|OUT.png]\n"
-         "                         [--image OUT.png] [--image-size PX] [--json] [--quiet]\n"
+         "                         [--image OUT.png] [--image-size PX] [--max-area-km2 N]\n"
+         "                         [--max-extent-km N] [--json] [--quiet]\n"
          "Generates the world of a coastline (default: the embedded island), or loads it from the\n"
          "cache when the same inputs were generated before, and prints a summary. -o writes the\n"
          "world file, the river network as GeoJSON, or the network image (.png); --image writes\n"
          "the network over its blocks (PX: 64..8192, default 1600). The cache directory defaults\n"
-         "to $STRAHLER_CACHE_DIR, $XDG_CACHE_HOME/strahler or ~/.cache/strahler.\n";
+         "to $STRAHLER_CACHE_DIR, $XDG_CACHE_HOME/strahler or ~/.cache/strahler.\n"
+         "--max-area-km2 N (default 250000) and --max-extent-km N (default 2000) raise or lower\n"
+         "the size a coastline may have (land area, longest side of its bounding box).\n";
 }
 
 int runGenerate(const std::vector<std::string>& rawArgs) {
-  auto parsed = CliArgs::parse(
-      "generate", rawArgs,
-      {"--coast", "--params", "--mouths", "--seed", "--cache-dir", "-o", "--image", "--image-size"},
-      {"--json", "--quiet", "--help", "-h"});
+  auto parsed = CliArgs::parse("generate", rawArgs,
+                               {"--coast", "--params", "--mouths", "--seed", "--cache-dir", "-o",
+                                "--image", "--image-size", kMaxAreaOption, kMaxExtentOption},
+                               {"--json", "--quiet", "--help", "-h"});
   if (!parsed)
     return usageError(parsed.error(), generateUsage());
   const CliArgs& args = parsed.value();
@@ -96,7 +100,10 @@ int runGenerate(const std::vector<std::string>& rawArgs) {
   sources.mouthsPath = args.get("--mouths").value_or("");
   sources.seed = seed.value();
 
-  auto spec = input::loadWorldSpec(sources);
+  auto limits = worldLimits(args);
+  if (!limits)
+    return usageError(limits.error(), generateUsage());
+  auto spec = input::loadWorldSpec(sources, limits.value());
   if (!spec)
     return fail(spec.error());
   base::StageTimer timer;

@@ -150,6 +150,25 @@ TEST(GenerateCommand, SameSeedSameBytesOtherSeedOtherNetwork) {
   EXPECT_NE(readFile(a), readFile(c));
 }
 
+TEST(GenerateCommand, SizeLimitsAreSetFromTheCommandLine) {
+  // The default island: 1,014 km², about 62 km x 37 km.
+  const ProcessRun small = strahler("generate --quiet --max-area-km2 500");
+  EXPECT_EQ(small.exitCode, 1);
+  EXPECT_NE(small.err.find("is more than the limit of 500.0 km² (raise it with --max-area-km2)"),
+            std::string::npos)
+      << small.err;
+  const ProcessRun narrow = strahler("generate --quiet --max-extent-km 40");
+  EXPECT_EQ(narrow.exitCode, 1);
+  EXPECT_NE(narrow.err.find("more than the limit of 40.0 km on a side (raise it with "
+                            "--max-extent-km)"),
+            std::string::npos)
+      << narrow.err;
+  const ProcessRun bad = strahler("generate --quiet --max-extent-km 0");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("--max-extent-km"), std::string::npos) << bad.err;
+  EXPECT_EQ(strahler("generate --quiet --max-area-km2 1100 --max-extent-km 70").exitCode, 0);
+}
+
 TEST(GenerateCommand, TwoFreshGenerationsWriteTheSameWorldBytes) {
   // Separate, empty cache directories: both runs generate (a cached world would be re-encoded
   // from the same data and prove nothing). Generation is single-threaded: no thread count to

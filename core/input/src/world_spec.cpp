@@ -101,7 +101,8 @@ base::Status projectLand(WorldSpec& spec, const InputLimits& limits) {
     return makeError(ErrorCode::kLimitExceeded,
                      "coastline: the land measures " + oneDecimal(size.x) + " km x " +
                          oneDecimal(size.y) + " km, more than the limit of " +
-                         oneDecimal(limits.maxExtentKm) + " km on a side (limit maxExtentKm)");
+                         oneDecimal(limits.maxExtentKm) +
+                         " km on a side (raise it with --max-extent-km)");
   const double areaKm2 = spec.areaKm2();
   if (!(areaKm2 > 0.0))
     return makeError(ErrorCode::kInvalidInput, "coastline: the land has zero area");
@@ -109,7 +110,7 @@ base::Status projectLand(WorldSpec& spec, const InputLimits& limits) {
     return makeError(ErrorCode::kLimitExceeded, "coastline: land area " + oneDecimal(areaKm2) +
                                                     " km² is more than the limit of " +
                                                     oneDecimal(limits.maxAreaKm2) +
-                                                    " km² (limit maxAreaKm2)");
+                                                    " km² (raise it with --max-area-km2)");
   return base::Ok{};
 }
 

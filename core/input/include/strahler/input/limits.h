@@ -11,8 +11,8 @@ struct InputLimits {
   int maxJsonDepth = 64;                       ///< Nesting depth of any JSON document.
   std::size_t maxVertices = 500'000;           ///< Coastline vertices, all rings together.
   std::size_t maxRings = 10'000;               ///< Coastline rings (islands + lakes).
-  double maxAreaKm2 = 50'000.0;                ///< Land area of one world.
-  double maxExtentKm = 1'000.0;                ///< Largest side of the world's bounding box.
+  double maxAreaKm2 = 250'000.0;               ///< Land area of one world (Great Britain: 209,331).
+  double maxExtentKm = 2'000.0;                ///< Largest side of the world's bounding box.
   std::size_t maxMouths = 10'000;              ///< User-given mouths.
   std::size_t maxConstraintPixels = 64u << 20; ///< Pixels of one constraint image.
 };
