@@ -37,14 +37,16 @@ constexpr const char* kAnalyzeUsage =
     "usage: strahler analyze WORLD.world [--cell-size M]\n"
     "       strahler analyze --dem FILE [--cell-size M]\n"
     "Checks that the terrain respects its water and prints JSON: the share of land cells\n"
-    "(M metres, 5..30, default 30) that drain to the sea or a lake after filling depressions\n"
+    "(M metres, 5..1000, default 30) that drain to the sea or a lake after filling depressions\n"
     "shallower than 1 m (with rivers burnt in, and without), rises along river centrelines\n"
     "(tolerance 0.5 m), Horton's bifurcation and length ratios, and the relief figures of the\n"
     "terrain (slope-area concavity, slope percentiles, D8 confluences, drainage density,\n"
     "dissection, agreement of D8 channels with the rivers, sinuosity by Rosgen type).\n"
     "--dem: the relief figures of a real DEM instead: an ESRI ASCII grid (.asc; --cell-size\n"
     "replaces its cellsize, e.g. for a grid in degrees) or any raster OpenImageIO reads\n"
-    "(heights in metres; --cell-size M, metres > 0, required). NODATA cells count as outside.\n";
+    "(heights in metres; --cell-size M, metres > 0, required). NODATA cells count as outside.\n"
+    "A world's raster may hold at most 60 million cells (about 3.5 GB); larger worlds need a\n"
+    "larger --cell-size (e.g. 120 for 100,000 km²).\n";
 
 constexpr const char* kTileUsage =
     "usage: strahler tile WORLD.world --scheme web|local --z Z --x X --y Y\n"
@@ -52,6 +54,9 @@ constexpr const char* kTileUsage =
     "Writes one tile. web: Web Mercator XYZ (zoom 0..18); local: the world's metric\n"
     "quadtree. png is Terrain-RGB. N: pixels per side for rasters (16..1024, default 256),\n"
     "quads per side for meshes (4..256, default 64).\n";
+
+/// The most raster cells `analyze` evaluates (about 55 bytes each at its peak).
+constexpr double kMaxAnalysisCells = 60e6;
 
 int threadCount() {
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -218,11 +223,21 @@ int runAnalyze(const std::vector<std::string>& raw) {
   if (auto* code = std::get_if<int>(&opened))
     return *code;
   WorldCommand& c = std::get<WorldCommand>(opened);
-  auto cell = c.args.getInt("--cell-size", 5, 30);
+  auto cell = c.args.getInt("--cell-size", 5, 1000);
   if (!cell)
     return usageError(cell.error(), kAnalyzeUsage);
   const construction::World world(std::move(c.world));
   const double cellSize = static_cast<double>(cell.value().value_or(30));
+  if (const double cells = quality::worldRasterCells(world, cellSize); cells > kMaxAnalysisCells)
+    return fail(base::makeError(
+        base::ErrorCode::kLimitExceeded,
+        "this world at " + std::to_string(cell.value().value_or(30)) +
+            " m cells needs a raster of " + std::to_string(std::llround(cells / 1e6)) +
+            " million cells, more than the 60 million analyze holds: use a " +
+            "larger --cell-size (at least " +
+            std::to_string(static_cast<long long>(
+                std::ceil(cellSize * std::sqrt(cells / kMaxAnalysisCells)))) +
+            ")"));
   quality::HeightRaster raster =
       quality::rasterizeWorld(world, cellSize, threadCount(), quality::RiverBurning::kNone);
   const quality::ReliefReport relief = reliefReport(raster, &world);

@@ -259,7 +259,7 @@ TEST(WorldCommands, InfoRenderAndAnalyzeAWorldFile) {
   EXPECT_EQ(stats["bytes"].get<std::size_t>(), fs::file_size(world));
   EXPECT_LT(stats["bytesPerKm2"].get<double>(), 500.0);
   EXPECT_GT(stats["primitives"]["terrain"].get<int>(), 5000);
-  EXPECT_EQ(stats["generatorVersion"], "strahler-generator-6");
+  EXPECT_EQ(stats["generatorVersion"], "strahler-generator-7");
 
   const fs::path png = scratchDir() / "relief.png";
   const ProcessRun render = strahler("render " + world.string() + " --size 300 -o " + png.string());
@@ -281,7 +281,7 @@ TEST(WorldCommands, InfoRenderAndAnalyzeAWorldFile) {
   for (const char* key : {"raster", "slopeArea", "slopeDeg", "steeperThan45Fraction", "confluences",
                           "confluences3PlusFraction", "drainageDensityKmPerKm2", "dissection",
                           "highestM", "channelsNearRiversFraction", "riversNearChannelsFraction",
-                          "networkConfluences3PlusFraction", "sinuosity"})
+                          "networkConfluences3PlusFraction", "riverDistanceM", "sinuosity"})
     EXPECT_TRUE(relief.contains(key)) << key;
   EXPECT_GT(relief["slopeDeg"]["p50"].get<double>(), 0.0);
   EXPECT_GT(relief["drainageDensityKmPerKm2"]["1"].get<double>(), 0.0);
@@ -302,6 +302,21 @@ TEST(WorldCommands, InfoRenderAndAnalyzeAWorldFile) {
   EXPECT_LE(relief["steeperThan45Fraction"].get<double>(), 0.005);
   EXPECT_GE(relief["sinuosity"]["B"].get<double>(), 1.0);
   EXPECT_EQ(relief["raster"]["cellSizeM"].get<double>(), 30.0);
+  // Rivers everywhere (issue 16): no land farther than 3 km from one.
+  EXPECT_LE(relief["riverDistanceM"]["max"].get<double>(), 3000.0);
+  EXPECT_EQ(relief["riverDistanceM"]["fartherThan3KmFraction"].get<double>(), 0.0);
+
+  // Coarse samples, as large worlds are analysed: valleys two samples wide are still drawn, so
+  // the land drains at 120 m too (primitives::riverFade).
+  const ProcessRun coarse = strahler("analyze " + world.string() + " --cell-size 120");
+  ASSERT_EQ(coarse.exitCode, 0) << coarse.err;
+  const auto coarseReport = nlohmann::json::parse(coarse.out);
+  EXPECT_EQ(coarseReport["relief"]["raster"]["cellSizeM"].get<double>(), 120.0);
+  EXPECT_GE(coarseReport["drainage"]["drainingFractionUnburnt"].get<double>(), 0.99);
+  // A raster too large for memory is refused with the cell size that fits.
+  const ProcessRun tooFine = strahler("analyze " + world.string() + " --cell-size 5");
+  EXPECT_EQ(tooFine.exitCode, 1);
+  EXPECT_NE(tooFine.err.find("larger --cell-size (at least"), std::string::npos) << tooFine.err;
 }
 
 TEST(WorldCommands, AnalyzeADemPrintsItsReliefFigures) {

@@ -76,6 +76,11 @@ Json reliefJson(const ReliefReport& relief) {
   json["channelsNearRiversFraction"] = number(n.channelsNearRivers);
   json["riversNearChannelsFraction"] = number(n.riversNearChannels);
   json["networkConfluences3PlusFraction"] = number(n.networkConfluences.shareThreeOrMore);
+  json["riverDistanceM"] = {{"p99", number(n.riverDistanceP99M)},
+                            {"max", number(n.riverDistanceMaxM)},
+                            {"fartherThan3KmFraction", number(n.fartherThanCoverageFraction)},
+                            {"farthestAt", Json::array({number(n.farthestFromRivers.x),
+                                                        number(n.farthestFromRivers.y)})}};
   json["sinuosity"] = {{"B", number(n.sinuosityB)},
                        {"E", number(n.sinuosityE)},
                        {"D", number(n.sinuosityD)},

@@ -3,6 +3,7 @@
 #include "d8_grid.h"
 
 #include "strahler/base/assert.h"
+#include "strahler/geometry/distance_transform.h"
 
 #include <algorithm>
 #include <cmath>
@@ -140,7 +141,7 @@ std::vector<Cell> interiorCells(const HeightRaster& r, double margin) {
   std::vector<std::uint8_t> water(r.heights.size());
   for (std::size_t i = 0; i < water.size(); ++i)
     water[i] = isLand(r, i) ? 0 : 1;
-  const std::vector<float> toWater = distanceToMarked(r.width, r.height, r.cellSize, water);
+  const std::vector<float> toWater = geometry::distanceToMarked(r.width, r.height, r.cellSize, water);
   std::vector<Cell> cells;
   for (int y = 0; y < r.height; ++y)
     for (int x = 0; x < r.width; ++x) {

@@ -1,7 +1,9 @@
 #include "strahler/quality/river_agreement.h"
 
+#include "strahler/geometry/distance_transform.h"
 #include "strahler/quality/world_raster.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -35,15 +37,18 @@ template <class Fn> void walkPolyline(const std::vector<Vec2>& line, double cell
   }
 }
 
-double channelsNearRivers(const construction::World& world, const HeightRaster& r,
-                          const FlowField& flow) {
+/// Distance (m) from every cell to the nearest cell a river centreline crosses.
+std::vector<float> distanceToRivers(const construction::World& world, const HeightRaster& r) {
   std::vector<std::uint8_t> onRiver(r.heights.size(), 0);
   for (const std::vector<Vec2>& line : riverCentrelines(world))
     walkPolyline(line, r.cellSize, [&](Vec2 p, double) {
       if (const long c = cellAt(r, p); c >= 0)
         onRiver[std::size_t(c)] = 1;
     });
-  const std::vector<float> distance = distanceToMarked(r.width, r.height, r.cellSize, onRiver);
+  return geometry::distanceToMarked(r.width, r.height, r.cellSize, onRiver);
+}
+
+double channelsNearRivers(const std::vector<float>& distance, const FlowField& flow) {
   std::size_t channels = 0, near = 0;
   for (std::uint32_t c : flow.order)
     if (flow.areaKm2[c] >= kChannelAreaKm2) {
@@ -53,12 +58,38 @@ double channelsNearRivers(const construction::World& world, const HeightRaster& 
   return channels == 0 ? kNaN : double(near) / double(channels);
 }
 
+/// How near the rivers come to every land cell: the 99th percentile and the greatest distance
+/// (m), and the share of land cells farther than kCoverageDistanceM.
+void measureCoverage(const std::vector<float>& distance, const HeightRaster& r,
+                     NetworkReliefFigures& figures) {
+  std::vector<float> land;
+  std::size_t farthest = 0;
+  for (std::size_t c = 0; c < distance.size(); ++c)
+    if (r.cellClass[c] == static_cast<std::uint8_t>(CellClass::kLand)) {
+      land.push_back(distance[c]);
+      farthest = distance[c] > distance[farthest] ? c : farthest;
+    }
+  if (land.empty())
+    return;
+  const auto row = static_cast<double>(farthest / std::size_t(r.width));
+  const auto column = static_cast<double>(farthest % std::size_t(r.width));
+  figures.farthestFromRivers = r.origin + Vec2{column, row} * r.cellSize;
+  const auto p99 = land.begin() + static_cast<std::ptrdiff_t>(0.99 * double(land.size() - 1));
+  std::nth_element(land.begin(), p99, land.end());
+  figures.riverDistanceP99M = *p99;
+  figures.riverDistanceMaxM = *std::max_element(p99, land.end());
+  const auto far =
+      std::count_if(land.begin(), land.end(), [](float d) { return d > kCoverageDistanceM; });
+  figures.fartherThanCoverageFraction = double(far) / double(land.size());
+}
+
 double riversNearChannels(const construction::World& world, const HeightRaster& r,
                           const FlowField& flow) {
   std::vector<std::uint8_t> channel(r.heights.size(), 0);
   for (std::uint32_t c : flow.order)
     channel[c] = flow.areaKm2[c] >= kChannelAreaKm2 ? 1 : 0;
-  const std::vector<float> distance = distanceToMarked(r.width, r.height, r.cellSize, channel);
+  const std::vector<float> distance =
+      geometry::distanceToMarked(r.width, r.height, r.cellSize, channel);
   double total = 0.0, near = 0.0;
   for (const primitives::RiverPrimitive& river : world.data().rivers) {
     if (world.data().network.node(river.node).strahler < 2)
@@ -112,7 +143,9 @@ std::array<double, 4> meanSinuosity(const std::vector<primitives::RiverPrimitive
 NetworkReliefFigures compareWithRivers(const construction::World& world, const HeightRaster& raster,
                                        const FlowField& flow) {
   NetworkReliefFigures figures;
-  figures.channelsNearRivers = channelsNearRivers(world, raster, flow);
+  const std::vector<float> toRivers = distanceToRivers(world, raster);
+  figures.channelsNearRivers = channelsNearRivers(toRivers, flow);
+  measureCoverage(toRivers, raster, figures);
   figures.riversNearChannels = riversNearChannels(world, raster, flow);
   figures.networkConfluences = countNetworkConfluences(world.data().network);
   const std::array<double, 4> sinuosity = meanSinuosity(world.data().rivers);

@@ -8,6 +8,11 @@
 namespace strahler::quality {
 namespace {
 
+/// The raster's extent: the land's bounds and a kilometre of sea around them.
+geometry::Aabb rasterBounds(const construction::World& world) {
+  return world.land().bounds().expanded(1000.0);
+}
+
 using geometry::Vec2;
 
 CellClass classify(const construction::World& world, Vec2 p) {
@@ -58,9 +63,14 @@ void burnRivers(const construction::World& world, HeightRaster& r) {
     }
 }
 
+double worldRasterCells(const construction::World& world, double cellSize) {
+  const geometry::Aabb box = rasterBounds(world);
+  return (std::floor(box.size().x / cellSize) + 1.0) * (std::floor(box.size().y / cellSize) + 1.0);
+}
+
 HeightRaster rasterizeWorld(const construction::World& world, double cellSize, int threads,
                             RiverBurning burning) {
-  const geometry::Aabb box = world.land().bounds().expanded(1000.0);
+  const geometry::Aabb box = rasterBounds(world);
   HeightRaster r;
   r.cellSize = cellSize;
   r.width = static_cast<int>(box.size().x / cellSize) + 1;

@@ -325,9 +325,9 @@ TEST(World, RiversNarrowerThanTheSamplesFade) {
     ++rivers;
     // Whole at fine spacing: its floor has weight 1.
     onFloor += world.evaluate(middle, 1.0).rivers.w == 1.0;
-    // Gone where its radius spans two samples (primitives::riverFade): other rivers may still
+    // Gone where its radius spans one sample (primitives::riverFade): other rivers may still
     // reach the point, but not with the weight of a floor.
-    faded += world.evaluate(middle, r.radius / 2.0).rivers.w < 1.0;
+    faded += world.evaluate(middle, r.radius).rivers.w < 1.0;
   }
   EXPECT_EQ(onFloor, rivers);
   EXPECT_GT(faded, rivers * 9 / 10) << faded << " of " << rivers;

@@ -193,16 +193,6 @@ TEST(Relief, NoInteriorCellMeansNoDissection) {
   EXPECT_TRUE(std::isnan(measureDissection(sea)));
 }
 
-TEST(Relief, DistanceTransformIsEuclidean) {
-  std::vector<std::uint8_t> marked(7 * 5, 0);
-  marked[2 * 7 + 3] = 1;
-  const std::vector<float> d = distanceToMarked(7, 5, 10.0, marked);
-  EXPECT_FLOAT_EQ(d[2 * 7 + 3], 0.0f);
-  EXPECT_FLOAT_EQ(d[0], float(10.0 * std::sqrt(13.0)));
-  EXPECT_FLOAT_EQ(d[4 * 7 + 6], float(10.0 * std::sqrt(13.0)));
-  EXPECT_TRUE(std::isinf(distanceToMarked(3, 3, 1.0, std::vector<std::uint8_t>(9, 0))[4]));
-}
-
 TEST(Relief, PitsAreFilledSoEveryLandCellReachesAnOutlet) {
   // A bowl: without filling its bottom would be a pit.
   const HeightRaster bowl = makeRaster(41, 41, 10.0, [](double x, double y) {

@@ -16,7 +16,7 @@ namespace strahler::construction {
 /// profiles, valleys scaled to the catchment, gully relief octaves.
 /// 6: river floors at the sample spacing, rivers joined by the deeper cut, sloping terrain
 /// primitives, valleys that widen with their depth (fitted radii), λ 0.35, concavity 0.3.
-inline constexpr const char* kGeneratorVersion = "strahler-generator-6";
+inline constexpr const char* kGeneratorVersion = "strahler-generator-7";
 
 /// Runs the whole generation of Sections 4–7 on `spec`: network, blocks and analysis
 /// (analysis::buildHydrology), then river and terrain primitives ("primitives"), quantised to

@@ -40,8 +40,10 @@ std::string analysisReportJson(const DrainageReport& drainage, const HortonStati
 ///    "steeperThan45Fraction", "confluences", "confluences3PlusFraction",
 ///    "drainageDensityKmPerKm2": {"0.1": ≥ 0.1 km² channels, "1": ≥ 1 km² channels},
 ///    "dissection", "highestM", "channelsNearRiversFraction", "riversNearChannelsFraction",
-///    "networkConfluences3PlusFraction", "sinuosity": {"B", "E", "D", "D-delta"}}
-/// (definitions in relief.h and river_agreement.h; the last four are null without a world).
+///    "networkConfluences3PlusFraction",
+///    "riverDistanceM": {"p99", "max", "fartherThan3KmFraction", "farthestAt": [x, y]},
+///    "sinuosity": {"B", "E", "D", "D-delta"}}
+/// (definitions in relief.h and river_agreement.h; the last five are null without a world).
 std::string demReportJson(const std::string& path, const ReliefReport& relief);
 
 } // namespace strahler::quality

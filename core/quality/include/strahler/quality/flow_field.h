@@ -35,10 +35,5 @@ FlowField computeFlowField(const HeightRaster& raster);
 /// cellSize·√2); cellSize for an outlet (to == kNone).
 double stepLength(const FlowField& flow, std::uint32_t from, std::uint32_t to) noexcept;
 
-/// Euclidean distance in metres from each cell centre to the nearest marked cell centre
-/// (Felzenszwalb–Huttenlocher exact transform, O(n)); +inf everywhere when none is marked.
-/// `marked` has width * height entries, non-zero for marked cells.
-std::vector<float> distanceToMarked(int width, int height, double cellSize,
-                                    const std::vector<std::uint8_t>& marked);
 
 } // namespace strahler::quality

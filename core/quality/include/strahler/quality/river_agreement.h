@@ -14,6 +14,10 @@ namespace strahler::quality {
 /// Distance (metres) within which a D8 channel and a world river centreline agree.
 inline constexpr double kAgreementDistanceM = 150.0;
 
+/// Distance (metres) from a river within which every land point should lie (issue 16's
+/// coverage target).
+inline constexpr double kCoverageDistanceM = 3000.0;
+
 /// The value of a figure that was not measured.
 inline constexpr double kUnmeasured = std::numeric_limits<double>::quiet_NaN();
 
@@ -27,6 +31,13 @@ struct NetworkReliefFigures {
   /// channel cell (sampled every half cell, each piece at its nearest cell); NaN without such
   /// rivers.
   double riversNearChannels = kUnmeasured;
+  /// Coverage: the 99th percentile and the greatest distance (m) from a land cell to the
+  /// nearest cell a river centreline crosses, and the share of land cells farther than
+  /// kCoverageDistanceM; NaN without land.
+  double riverDistanceP99M = kUnmeasured, riverDistanceMaxM = kUnmeasured,
+         fartherThanCoverageFraction = kUnmeasured;
+  /// The centre of the land cell farthest from the rivers (local metres).
+  geometry::Vec2 farthestFromRivers{kUnmeasured, kUnmeasured};
   /// Confluences of the river graph: nodes with ≥ 2 children, and those with ≥ 3.
   ConfluenceCount networkConfluences;
   /// Mean sinuosity (curve length / distance between its ends) of the river primitives of

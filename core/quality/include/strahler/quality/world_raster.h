@@ -17,6 +17,9 @@ enum class RiverBurning { kBurn, kNone };
 HeightRaster rasterizeWorld(const construction::World& world, double cellSize, int threads = 1,
                             RiverBurning burning = RiverBurning::kBurn);
 
+/// The number of cells rasterizeWorld's raster of `cellSize` metres has for `world`.
+double worldRasterCells(const construction::World& world, double cellSize);
+
 /// Burns rivers into a rasterizeWorld raster (as hydrological DEM preparation does with a vector
 /// stream network): every cell a river centreline crosses takes the centreline's height if
 /// that is lower, because a 30 m cell cannot resolve a 4–40 m channel, and a channel sampled
