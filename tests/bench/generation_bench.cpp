@@ -1,5 +1,8 @@
 // Per-stage times of world generation (issue: graph + analysis of ~3,500 km² in ≤ 0.3 s on
-// one core; 4× the area in ≤ 5× the time). Run: build/release/tests/bench/strahler_bench
+// one core; 4× the area in ≤ 5× the time), and the whole generation of Mallorca scaled to
+// 4×, 16× and 64× its area (issue 16: cost no worse than n log n; 236,000 km² works).
+// Run: build/release/tests/bench/strahler_bench (--benchmark_filter=BM_GenerateWorld for the
+// scaling series alone).
 #include "test_worlds.h"
 
 #include "strahler/analysis/hydrology.h"
@@ -13,25 +16,26 @@
 namespace strahler {
 namespace {
 
-/// The world named by the benchmark argument: 0 default island, 1 Mallorca, 2 Mallorca
-/// scaled ×2 in each direction (4× the area).
+/// The world named by the benchmark argument: 0 default island, 1 Mallorca, 2, 3 and 4
+/// Mallorca scaled ×2, ×4 and ×8 in each direction (4×, 16× and 64× the area).
 input::WorldSpec worldFor(std::int64_t which) {
   if (which == 0)
     return testing::defaultIslandSpec();
   input::WorldSpec spec = testing::mallorcaSpec();
-  if (which == 2)
-    for (geometry::Polygon& p : spec.land) {
-      for (geometry::Vec2& v : p.outer)
-        v = v * 2.0;
-      for (geometry::Ring& h : p.holes)
-        for (geometry::Vec2& v : h)
-          v = v * 2.0;
-    }
+  const double scale = static_cast<double>(std::int64_t{1} << (which - 1));
+  for (geometry::Polygon& p : spec.land) {
+    for (geometry::Vec2& v : p.outer)
+      v = v * scale;
+    for (geometry::Ring& h : p.holes)
+      for (geometry::Vec2& v : h)
+        v = v * scale;
+  }
   return spec;
 }
 
 void setLabel(benchmark::State& state, const input::WorldSpec& spec) {
-  static const char* names[] = {"default", "mallorca", "mallorca-x4"};
+  static const char* names[] = {"default", "mallorca", "mallorca-x4", "mallorca-x16",
+                                "mallorca-x64"};
   state.SetLabel(std::string(names[state.range(0)]) + " " +
                  std::to_string(static_cast<int>(geometry::area(spec.land) / 1e6)) + " km2");
 }
@@ -96,7 +100,11 @@ void BM_GenerateWorld(benchmark::State& state) {
     bytes = store::encodeWorld(world.value()).size();
     benchmark::DoNotOptimize(bytes);
   }
-  state.counters["bytes/km2"] = static_cast<double>(bytes) / (geometry::area(spec.land) / 1e6);
+  const double areaKm2 = geometry::area(spec.land) / 1e6;
+  state.counters["bytes/km2"] = static_cast<double>(bytes) / areaKm2;
+  // Flat across the series where the cost grows linearly with the area.
+  state.counters["km2/s"] =
+      benchmark::Counter(areaKm2, benchmark::Counter::kIsIterationInvariantRate);
   setLabel(state, spec);
 }
 
@@ -114,6 +122,7 @@ void BM_LoadWorld(benchmark::State& state) {
 }
 
 BENCHMARK(BM_GenerateWorld)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GenerateWorld)->DenseRange(3, 4)->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LoadWorld)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 
 } // namespace

@@ -63,8 +63,10 @@ double accessibility(const geometry::PolygonIndex& land, Vec2 p, double radius) 
   return inside / total;
 }
 
-std::vector<Candidate> sampleShore(const input::Params& params,
-                                   const geometry::PolygonIndex& land) {
+/// Γ sampled every e/2, where a first edge straight inland would be valid; each sample scored
+/// by its accessibility when `score` is set.
+std::vector<Candidate> sampleShore(const input::Params& params, const geometry::PolygonIndex& land,
+                                   bool score) {
   std::vector<Candidate> candidates;
   const double step = params.edgeLength * 0.5;
   for (std::uint32_t r = 0; r < land.rings().size(); ++r) {
@@ -83,7 +85,7 @@ std::vector<Candidate> sampleShore(const input::Params& params,
       c.site.position = p;
       c.site.inward = inward;
       c.site.onLake = land.isHole(r);
-      c.site.accessibility = accessibility(land, p, params.accessibilityRadius);
+      c.site.accessibility = score ? accessibility(land, p, params.accessibilityRadius) : 0.0;
       c.ring = r;
       c.order = static_cast<std::uint32_t>(candidates.size());
       candidates.push_back(c);
@@ -119,7 +121,7 @@ void assignPriorities(std::vector<MouthSite>& mouths, int maxPriority) {
 
 std::vector<MouthSite> placeAutomatic(const input::Params& params,
                                       const geometry::PolygonIndex& land) {
-  std::vector<Candidate> candidates = sampleShore(params, land);
+  std::vector<Candidate> candidates = sampleShore(params, land, true);
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& a, const Candidate& b) {
                      return a.site.accessibility > b.site.accessibility;
@@ -170,6 +172,13 @@ base::Result<std::vector<MouthSite>> snapUserMouths(const input::WorldSpec& spec
 }
 
 } // namespace
+
+std::vector<MouthSite> shoreSites(const input::Params& params, const geometry::PolygonIndex& land) {
+  std::vector<MouthSite> sites;
+  for (const Candidate& c : sampleShore(params, land, false))
+    sites.push_back(c.site);
+  return sites;
+}
 
 base::Result<std::vector<MouthSite>> placeMouths(const input::WorldSpec& spec,
                                                  const geometry::PolygonIndex& land) {

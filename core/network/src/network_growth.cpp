@@ -4,12 +4,14 @@
 
 #include "strahler/base/random.h"
 #include "strahler/geometry/distance.h"
+#include "strahler/geometry/distance_transform.h"
 #include "strahler/geometry/grid_index.h"
 #include "strahler/network/relief_law.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <queue>
 #include <string>
 
@@ -24,6 +26,19 @@ constexpr double kMinRise = 0.01;         // metres: children are strictly highe
 constexpr double kSlopeRadiusEdges = 3.0; // κ test radius, in edge lengths
 constexpr double kMaxNodes = 2'000'000.0; // memory bound on one network
 constexpr std::uint64_t kGrowthStream = 0x67726f77ull;
+/// Coverage (issue 16): land farther than this from every river edge is a gap that growth
+/// goes back to (3 km is the target; the margin covers the carved curves, which leave the
+/// edges by up to a few hundred metres, and the grid's resolution).
+constexpr double kCoverageGap = 2400.0;
+/// Cell side of the coverage grid, m (a coarser one on very large worlds).
+constexpr double kCoverageCell = 300.0;
+constexpr std::size_t kMaxCoverageCells = std::size_t{1} << 24;
+/// Rounds of gap filling (each seeds every gap, then grows until no candidate is left).
+constexpr int kGapRounds = 4;
+/// Nodes tried per gap: the nearest ones that can take another child.
+constexpr int kNodesPerGap = 12;
+/// Shore sites tried per gap: the nearest ones.
+constexpr int kShoreSitesPerGap = 6;
 
 /// A child the grammar asks for: direction relative to the parent's, and its priority.
 struct ChildRequest {
@@ -45,15 +60,9 @@ public:
     network_.edgeLength = params_.edgeLength;
     for (const MouthSite& m : mouths)
       addMouth(m);
-    std::size_t steps = 0;
-    while (candidateCount_ > 0) {
-      const NodeId selected = selectCandidate();
-      expand(selected);
-      if (progress && (++steps & 511u) == 0) {
-        const double filled = double(network_.nodes.size()) * params_.sigma * params_.edgeLength;
-        progress("network", std::min(0.99, filled / landArea));
-      }
-    }
+    growAll(progress, landArea);
+    for (int round = 0; round < kGapRounds && seedGaps() > 0; ++round)
+      growAll(progress, landArea);
     computeStrahlerNumbers(network_);
     if (progress)
       progress("network", 1.0);
@@ -63,6 +72,143 @@ public:
 private:
   using HeapEntry = std::pair<double, std::uint32_t>; // (elevation, node index)
   using MinHeap = std::priority_queue<HeapEntry, std::vector<HeapEntry>, std::greater<>>;
+
+  /// Expands candidates until none is left.
+  void growAll(const base::ProgressCallback& progress, double landArea) {
+    std::size_t steps = 0;
+    while (candidateCount_ > 0) {
+      const NodeId selected = selectCandidate();
+      expand(selected);
+      if (progress && (++steps & 511u) == 0) {
+        const double filled = double(network_.nodes.size()) * params_.sigma * params_.edgeLength;
+        progress("network", std::min(0.99, filled / landArea));
+      }
+    }
+  }
+
+  /// A grid over the land and, per cell, the distance (m) from its centre to the nearest
+  /// cell an edge of the network crosses.
+  struct Coverage {
+    geometry::Aabb box;
+    double cell = kCoverageCell;
+    int width = 0, height = 0;
+    std::vector<float> distance;
+    Vec2 centre(std::size_t i) const noexcept {
+      return box.min + Vec2{(double(i % std::size_t(width)) + 0.5) * cell,
+                            (double(i / std::size_t(width)) + 0.5) * cell};
+    }
+  };
+
+  Coverage measureCoverage() const {
+    Coverage c;
+    c.box = land_.bounds();
+    const Vec2 size = c.box.size();
+    while ((size.x / c.cell + 1.0) * (size.y / c.cell + 1.0) > double(kMaxCoverageCells))
+      c.cell *= 1.5;
+    c.width = static_cast<int>(size.x / c.cell) + 1;
+    c.height = static_cast<int>(size.y / c.cell) + 1;
+    std::vector<std::uint8_t> onRiver(std::size_t(c.width) * std::size_t(c.height), 0);
+    const auto mark = [&](Vec2 p) {
+      const auto x = static_cast<int>(std::floor((p.x - c.box.min.x) / c.cell));
+      const auto y = static_cast<int>(std::floor((p.y - c.box.min.y) / c.cell));
+      if (x >= 0 && y >= 0 && x < c.width && y < c.height)
+        onRiver[std::size_t(y) * std::size_t(c.width) + std::size_t(x)] = 1;
+    };
+    for (const RiverNode& n : network_.nodes) {
+      mark(n.position);
+      if (!n.parent.valid())
+        continue;
+      const Vec2 a = network_.nodes[n.parent.index()].position;
+      const int steps = std::max(1, static_cast<int>(std::ceil(distance(a, n.position) / c.cell)));
+      for (int k = 1; k < steps; ++k)
+        mark(geometry::lerp(a, n.position, double(k) / steps));
+    }
+    c.distance = geometry::distanceToMarked(c.width, c.height, c.cell, onRiver);
+    return c;
+  }
+
+  /// Starts growth toward every gap of the coverage (land farther than kCoverageGap from the
+  /// network), farthest first: from the nearest nodes that can take another child without
+  /// making a confluence of three, or from a new mouth on the nearest shore when that is
+  /// nearer. Returns the number of seeds planted.
+  std::size_t seedGaps() {
+    const Coverage coverage = measureCoverage();
+    std::vector<std::uint32_t> gaps;
+    for (std::size_t i = 0; i < coverage.distance.size(); ++i)
+      if (coverage.distance[i] > kCoverageGap && land_.contains(coverage.centre(i)))
+        gaps.push_back(static_cast<std::uint32_t>(i));
+    std::stable_sort(gaps.begin(), gaps.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return coverage.distance[a] > coverage.distance[b];
+    });
+    std::vector<Vec2> seeds;
+    for (std::uint32_t g : gaps) {
+      const Vec2 p = coverage.centre(g);
+      const bool served = std::any_of(seeds.begin(), seeds.end(),
+                                      [&](Vec2 s) { return distance(s, p) <= kCoverageGap; });
+      if (served)
+        continue;
+      const double reach = coverage.distance[g] + params_.edgeLength;
+      if (seedTowards(p, reach))
+        seeds.push_back(p);
+    }
+    return seeds.size();
+  }
+
+  /// One seed toward gap point p: a child of a nearby node or a new mouth, whichever lies
+  /// nearer to p first.
+  bool seedTowards(Vec2 p, double reach) {
+    std::vector<std::pair<double, NodeId>> near;
+    geometry::Aabb box;
+    box.add(p);
+    nodeGrid_.query(box.expanded(reach), [&](std::uint32_t i) {
+      const RiverNode& n = network_.nodes[i];
+      const double d = distance(n.position, p);
+      if (d <= reach && n.children.size() < 2 && n.parent.valid())
+        near.emplace_back(d, NodeId(i));
+      return true;
+    });
+    std::sort(near.begin(), near.end(), [](const auto& a, const auto& b) {
+      return a.first < b.first || (a.first == b.first && a.second.value < b.second.value);
+    });
+    if (near.size() > std::size_t{kNodesPerGap})
+      near.resize(kNodesPerGap);
+    const double shore = land_.distanceToBoundary(p, reach);
+    const bool shoreFirst = shore < reach && (near.empty() || shore < near[0].first);
+    if (shoreFirst && mouthTowards(p, reach))
+      return true;
+    for (const auto& [d, id] : near) {
+      const Vec2 to = p - network_.nodes[id.index()].position;
+      const Vec2 dir = directions_[id.index()];
+      const double angle = std::atan2(to.y, to.x) - std::atan2(dir.y, dir.x);
+      if (tryChild(id, {angle, 1}))
+        return true;
+    }
+    return !shoreFirst && shore < reach && mouthTowards(p, reach);
+  }
+
+  /// A new mouth at one of the shore sites nearest to p (within `reach`) whose first edge,
+  /// straight inland, passes the rules of a grown child: clear of Γ, of other edges, and of κ.
+  bool mouthTowards(Vec2 p, double reach) {
+    if (!shoreSites_)
+      shoreSites_ = shoreSites(params_, land_);
+    std::vector<std::pair<double, std::size_t>> near;
+    for (std::size_t i = 0; i < shoreSites_->size(); ++i)
+      if (const double d = distance((*shoreSites_)[i].position, p); d <= reach)
+        near.emplace_back(d, i);
+    std::sort(near.begin(), near.end());
+    if (near.size() > std::size_t{kShoreSitesPerGap})
+      near.resize(kShoreSitesPerGap);
+    for (const auto& [d, i] : near) {
+      const MouthSite& site = (*shoreSites_)[i];
+      const Vec2 child = site.position + site.inward * params_.edgeLength;
+      const double z = std::max(params_.edgeLength * relief_.riverSlope(child), kMinRise);
+      if (clearOfEdges(site.position, child, NodeId::invalid()) && slopesBelowKappa(child, z)) {
+        addMouth(site); // a candidate: growth gives it its children
+        return true;
+      }
+    }
+    return false;
+  }
 
   void addMouth(const MouthSite& m) {
     const NodeId id = addNode(m.position, 0.0, NodeId::invalid(), m.priority, m.inward);
@@ -161,7 +307,8 @@ private:
       tryChild(id, child);
   }
 
-  void tryChild(NodeId parentId, const ChildRequest& child) {
+  /// Adds the child if one of a few jittered directions passes valid(); whether it did.
+  bool tryChild(NodeId parentId, const ChildRequest& child) {
     const Vec2 dir = directions_[parentId.index()];
     const double baseAngle = std::atan2(dir.y, dir.x) + child.angle;
     for (int attempt = 0; attempt < kAttemptsPerChild; ++attempt) {
@@ -173,9 +320,10 @@ private:
       const double z = parent.elevation + std::max(rise, kMinRise);
       if (valid(parentId, p, z)) {
         addNode(p, z, parentId, child.priority, step);
-        return;
+        return true;
       }
     }
+    return false;
   }
 
   /// The geometric tests of Section 4.2.2 for a new node p (elevation z) below `parentId`.
@@ -189,18 +337,22 @@ private:
   }
 
   bool clearOfOtherEdges(NodeId parentId, Vec2 p) const {
-    const RiverNode& parent = network_.nodes[parentId.index()];
+    return clearOfEdges(network_.nodes[parentId.index()].position, p, parentId);
+  }
+
+  /// Whether the edge [from, p] stays more than σ from every edge not adjacent to node
+  /// `from` (`fromId`; invalid for a point that is not yet a node).
+  bool clearOfEdges(Vec2 from, Vec2 p, NodeId fromId) const {
     geometry::Aabb box;
-    box.add(parent.position);
+    box.add(from);
     box.add(p);
     return edges_.query(box.expanded(params_.sigma), [&](std::uint32_t c) {
       const RiverNode& other = network_.nodes[c];
       // Edges sharing the parent node are adjacent: the parent's own edge and its siblings'.
-      if (c == parentId.value || other.parent == parentId)
+      if (fromId.valid() && (c == fromId.value || other.parent == fromId))
         return true;
       const Vec2 a = network_.nodes[other.parent.index()].position;
-      return geometry::segmentSegmentDistance(parent.position, p, a, other.position) >
-             params_.sigma;
+      return geometry::segmentSegmentDistance(from, p, a, other.position) > params_.sigma;
     });
   }
 
@@ -223,8 +375,9 @@ private:
   geometry::GridIndex nodeGrid_; // every node
   std::vector<MinHeap> heaps_;   // candidates X by priority
   std::size_t candidateCount_ = 0;
-  std::size_t highPriorityCount_ = 0; // candidates with priority > 1
-  std::vector<Vec2> directions_;      // per node: unit flow direction, upstream
+  std::size_t highPriorityCount_ = 0;                // candidates with priority > 1
+  std::vector<Vec2> directions_;                     // per node: unit flow direction, upstream
+  std::optional<std::vector<MouthSite>> shoreSites_; // for gap mouths, sampled when first needed
   RiverNetwork network_;
 };
 

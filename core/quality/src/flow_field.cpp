@@ -117,5 +117,4 @@ double stepLength(const FlowField& flow, std::uint32_t from, std::uint32_t to) n
   return diagonal ? flow.cellSize * d8::kDiagonal : flow.cellSize;
 }
 
-
 } // namespace strahler::quality

@@ -141,7 +141,8 @@ std::vector<Cell> interiorCells(const HeightRaster& r, double margin) {
   std::vector<std::uint8_t> water(r.heights.size());
   for (std::size_t i = 0; i < water.size(); ++i)
     water[i] = isLand(r, i) ? 0 : 1;
-  const std::vector<float> toWater = geometry::distanceToMarked(r.width, r.height, r.cellSize, water);
+  const std::vector<float> toWater =
+      geometry::distanceToMarked(r.width, r.height, r.cellSize, water);
   std::vector<Cell> cells;
   for (int y = 0; y < r.height; ++y)
     for (int x = 0; x < r.width; ++x) {

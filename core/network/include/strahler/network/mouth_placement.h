@@ -28,4 +28,9 @@ struct MouthSite {
 base::Result<std::vector<MouthSite>> placeMouths(const input::WorldSpec& spec,
                                                  const geometry::PolygonIndex& land);
 
+/// Every place on the shore where a river could start: Γ sampled every e/2 with the inward
+/// normal of the shore over ±e, kept where a first edge straight inland would be valid
+/// (priority 1, accessibility left 0). Growth takes its gap mouths from these.
+std::vector<MouthSite> shoreSites(const input::Params& params, const geometry::PolygonIndex& land);
+
 } // namespace strahler::network

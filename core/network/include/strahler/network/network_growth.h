@@ -20,7 +20,12 @@ namespace strahler::network {
 /// - a child is kept only if it is in Ω, its edge stays more than δ from Γ, more than σ from
 ///   every non-adjacent edge, and its slope to nearby nodes is below κ (a few angles are
 ///   tried per child before it is rejected);
-/// - every child is higher than its parent by the ReliefLaw's slope times e.
+/// - every child is higher than its parent by the ReliefLaw's slope times e;
+/// - once no candidate is left, growth goes back to the gaps: land farther than 2.4 km from
+///   every edge gets a child of a nearby node (one with at most one child) aimed at it, or a
+///   new mouth at a nearby shore site (shoreSites), and growth resumes (a few rounds), so
+///   every land point lies within 3 km of a river on the worlds measured
+///   (docs/architecture.md).
 /// Strahler numbers are computed on the final trees. Deterministic for a given spec.
 base::Result<RiverNetwork> growNetwork(const input::WorldSpec& spec,
                                        const geometry::PolygonIndex& land,

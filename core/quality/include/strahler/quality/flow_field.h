@@ -35,5 +35,4 @@ FlowField computeFlowField(const HeightRaster& raster);
 /// cellSize·√2); cellSize for an outlet (to == kNone).
 double stepLength(const FlowField& flow, std::uint32_t from, std::uint32_t to) noexcept;
 
-
 } // namespace strahler::quality
