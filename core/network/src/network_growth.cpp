@@ -141,6 +141,7 @@ private:
       return coverage.distance[a] > coverage.distance[b];
     });
     std::vector<Vec2> seeds;
+    const auto expanded = static_cast<std::uint32_t>(network_.nodes.size());
     for (std::uint32_t g : gaps) {
       const Vec2 p = coverage.centre(g);
       const bool served = std::any_of(seeds.begin(), seeds.end(),
@@ -148,22 +149,23 @@ private:
       if (served)
         continue;
       const double reach = coverage.distance[g] + params_.edgeLength;
-      if (seedTowards(p, reach))
+      if (seedTowards(p, reach, expanded))
         seeds.push_back(p);
     }
     return seeds.size();
   }
 
-  /// One seed toward gap point p: a child of a nearby node or a new mouth, whichever lies
-  /// nearer to p first.
-  bool seedTowards(Vec2 p, double reach) {
+  /// One seed toward gap point p: a child of a nearby node below `expanded` (the nodes that
+  /// were expanded: a seed of this round will be, and would then take its children on top)
+  /// or a new mouth, whichever lies nearer to p first.
+  bool seedTowards(Vec2 p, double reach, std::uint32_t expanded) {
     std::vector<std::pair<double, NodeId>> near;
     geometry::Aabb box;
     box.add(p);
     nodeGrid_.query(box.expanded(reach), [&](std::uint32_t i) {
       const RiverNode& n = network_.nodes[i];
       const double d = distance(n.position, p);
-      if (d <= reach && n.children.size() < 2 && n.parent.valid())
+      if (i < expanded && d <= reach && n.children.size() < 2 && n.parent.valid())
         near.emplace_back(d, NodeId(i));
       return true;
     });
