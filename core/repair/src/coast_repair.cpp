@@ -3,6 +3,7 @@
 #include "strahler/repair/coast_repair.h"
 
 #include "bg_types.h"
+#include "pinches.h"
 #include "ring_loops.h"
 
 #include <algorithm>
@@ -20,12 +21,9 @@ using base::makeError;
 using detail::BgMulti;
 using detail::BgPolygon;
 using detail::Point;
+using detail::unite;
 using geometry::Vec2;
 namespace bg = boost::geometry;
-
-constexpr double kMetresPerDegree = 6371000.0 * 3.14159265358979323846 / 180.0;
-/// Largest width of the rhombus that joins two pieces touching at a point.
-constexpr double kMaxPinchMetres = 10.0;
 
 std::string ringName(const std::string& label, std::size_t ring) {
   return label + ", ring " + std::to_string(ring);
@@ -139,6 +137,15 @@ base::Result<RingResult> repairRing(const geometry::Ring& raw, bool outer, const
     out.empty = true;
     return out;
   }
+  for (const detail::Loop& flat : pieces.flat) {
+    const detail::Crossing& c = pieces.crossings[static_cast<std::size_t>(flat.crossing)];
+    changes.push_back({ChangeKind::kSpike, c.point, 0.0,
+                       where + ": segments at " +
+                           segmentName(clean.positions, c.first, clean.closing) + " and " +
+                           segmentName(clean.positions, c.second, clean.closing) +
+                           " run along each other; the zero-width loop of " +
+                           std::to_string(flat.vertices.size()) + " vertices there removed"});
+  }
   std::size_t main = 0;
   for (std::size_t k = 1; k < pieces.loops.size(); ++k)
     if (std::abs(pieces.loops[k].signedArea) > std::abs(pieces.loops[main].signedArea))
@@ -206,12 +213,6 @@ struct PolygonResult {
   std::vector<geometry::Ring> rings; ///< When simple: the outer ring, then the holes.
   BgMulti area;                      ///< Always set.
 };
-
-BgMulti unite(const BgMulti& a, const BgMulti& b) {
-  BgMulti out;
-  bg::union_(a, b, out);
-  return out;
-}
 
 /// Where a report about a piece should point: its centroid, or `fallback` when it is empty.
 Vec2 placeOf(const BgMulti& piece, Vec2 fallback) {
@@ -282,7 +283,9 @@ repairPolygon(const InputPolygon& input, const RepairLimits& limits, std::vector
                              "part inside the land is water"});
     }
     for (std::size_t b = a + 1; b < holes.size(); ++b)
-      if (bg::intersects(hole.area, rings[holes[b]].area)) {
+      if (bg::intersects(bg::return_envelope<detail::Box>(hole.area),
+                         bg::return_envelope<detail::Box>(rings[holes[b]].area)) &&
+          bg::intersects(hole.area, rings[holes[b]].area)) {
         out.simple = false;
         BgMulti common;
         bg::intersection(hole.area, rings[holes[b]].area, common);
@@ -314,9 +317,9 @@ repairPolygon(const InputPolygon& input, const RepairLimits& limits, std::vector
 void mergeOverlaps(std::vector<PolygonResult>& polygons, const std::vector<std::string>& labels,
                    std::vector<Change>& changes) {
   const std::size_t n = polygons.size();
-  std::vector<bg::model::box<Point>> boxes;
+  std::vector<detail::Box> boxes;
   for (const PolygonResult& p : polygons)
-    boxes.push_back(bg::return_envelope<bg::model::box<Point>>(p.area));
+    boxes.push_back(bg::return_envelope<detail::Box>(p.area));
   std::vector<std::size_t> group(n);
   for (std::size_t i = 0; i < n; ++i)
     group[i] = i;
@@ -355,112 +358,10 @@ geometry::MultiPolygon collect(const std::vector<PolygonResult>& polygons) {
   geometry::MultiPolygon land;
   for (const PolygonResult& p : polygons) {
     if (p.simple) {
-      geometry::Polygon polygon{p.rings[0], {p.rings.begin() + 1, p.rings.end()}};
-      land.push_back(std::move(polygon));
+      land.push_back(geometry::Polygon{p.rings[0], {p.rings.begin() + 1, p.rings.end()}});
       continue;
     }
-    for (const BgPolygon& bgPolygon : p.area) {
-      geometry::Polygon polygon{detail::fromBgRing(bgPolygon.outer()), {}};
-      for (const auto& hole : bgPolygon.inners())
-        polygon.holes.push_back(detail::fromBgRing(hole));
-      land.push_back(std::move(polygon));
-    }
-  }
-  return land;
-}
-
-/// Points where the land touches itself: a vertex that appears twice among all rings.
-std::vector<Vec2> findPinches(const geometry::MultiPolygon& land) {
-  std::vector<std::pair<double, double>> vertices;
-  for (const geometry::Polygon& polygon : land) {
-    for (const Vec2 v : polygon.outer)
-      vertices.emplace_back(v.x, v.y);
-    for (const geometry::Ring& hole : polygon.holes)
-      for (const Vec2 v : hole)
-        vertices.emplace_back(v.x, v.y);
-  }
-  std::sort(vertices.begin(), vertices.end());
-  std::vector<Vec2> pinches;
-  for (std::size_t i = 1; i < vertices.size(); ++i)
-    if (vertices[i] == vertices[i - 1] &&
-        (pinches.empty() || !(pinches.back() == Vec2{vertices[i].first, vertices[i].second})))
-      pinches.push_back({vertices[i].first, vertices[i].second});
-  return pinches;
-}
-
-/// A rhombus around `at` whose diagonals measure at most 2 kMaxPinchMetres and a quarter of
-/// the shortest segment that ends there (so that it reaches no other vertex).
-BgPolygon pinchRhombus(const geometry::MultiPolygon& land, Vec2 at) {
-  const double metresPerLon = kMetresPerDegree * std::cos(at.y * 3.14159265358979323846 / 180.0);
-  double radius = kMaxPinchMetres;
-  const auto visit = [&](const geometry::Ring& ring) {
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      if (!(ring[i] == at))
-        continue;
-      for (const Vec2 other :
-           {ring[(i + 1) % ring.size()], ring[(i + ring.size() - 1) % ring.size()]}) {
-        const Vec2 d{(other.x - at.x) * metresPerLon, (other.y - at.y) * kMetresPerDegree};
-        radius = std::min(radius, 0.25 * geometry::length(d));
-      }
-    }
-  };
-  for (const geometry::Polygon& polygon : land) {
-    visit(polygon.outer);
-    for (const geometry::Ring& hole : polygon.holes)
-      visit(hole);
-  }
-  const double dx = radius / metresPerLon, dy = radius / kMetresPerDegree;
-  BgPolygon rhombus;
-  rhombus.outer() = {Point(at.x + dx, at.y), Point(at.x, at.y + dy), Point(at.x - dx, at.y),
-                     Point(at.x, at.y - dy), Point(at.x + dx, at.y)};
-  return rhombus;
-}
-
-/// Joins pieces that touch at single points with small rhombi, a few rounds at most (a
-/// rhombus could make a new contact where shores run close).
-geometry::MultiPolygon closePinches(geometry::MultiPolygon land, std::vector<Change>& changes) {
-  for (int round = 0; round < 3; ++round) {
-    const std::vector<Vec2> pinches = findPinches(land);
-    if (pinches.empty())
-      break;
-    // Only the polygons with a pinch vertex are rebuilt; the others stay as they are.
-    std::vector<bool> affected(land.size(), false);
-    for (std::size_t p = 0; p < land.size(); ++p)
-      for (const Vec2 at : pinches) {
-        const auto has = [at](const geometry::Ring& ring) {
-          return std::find(ring.begin(), ring.end(), at) != ring.end();
-        };
-        affected[p] = affected[p] || has(land[p].outer) ||
-                      std::any_of(land[p].holes.begin(), land[p].holes.end(), has);
-      }
-    std::vector<BgPolygon> rhombusAt;
-    for (const Vec2 at : pinches)
-      rhombusAt.push_back(pinchRhombus(land, at));
-    BgMulti pieces;
-    geometry::MultiPolygon kept;
-    for (std::size_t p = 0; p < land.size(); ++p) {
-      if (!affected[p]) {
-        kept.push_back(std::move(land[p]));
-        continue;
-      }
-      BgPolygon polygon;
-      polygon.outer() = detail::toBgRing(land[p].outer);
-      for (const geometry::Ring& hole : land[p].holes)
-        polygon.inners().push_back(detail::toBgRing(hole));
-      pieces.push_back(std::move(polygon));
-    }
-    BgMulti rhombi;
-    for (std::size_t k = 0; k < pinches.size(); ++k) {
-      const Vec2 at = pinches[k];
-      const BgPolygon& rhombus = rhombusAt[k];
-      BgMulti added;
-      bg::difference(rhombus, pieces, added);
-      changes.push_back({ChangeKind::kPinch, at, detail::areaKm2(added),
-                         "pieces of land touching at one point were joined there"});
-      rhombi = unite(rhombi, BgMulti{rhombus});
-    }
-    land = std::move(kept);
-    for (geometry::Polygon& polygon : collect({PolygonResult{false, {}, unite(pieces, rhombi)}}))
+    for (geometry::Polygon& polygon : detail::multiPolygonOf(p.area))
       land.push_back(std::move(polygon));
   }
   return land;
@@ -482,7 +383,7 @@ base::Result<RepairedCoast> repairUnguarded(const std::vector<InputPolygon>& inp
     }
   }
   mergeOverlaps(polygons, labels, out.changes);
-  out.land = closePinches(collect(polygons), out.changes);
+  out.land = detail::closePinches(collect(polygons), out.changes);
   if (out.land.empty())
     return makeError(ErrorCode::kInvalidInput,
                      "coastline: nothing is left after the repair: every ring encloses no area");

@@ -12,7 +12,6 @@ namespace strahler::repair::detail {
 namespace {
 
 namespace bgi = boost::geometry::index;
-using Box = bg::model::box<Point>;
 using Segment = bg::model::segment<Point>;
 using geometry::Vec2;
 
@@ -139,11 +138,12 @@ std::vector<Vec2> insertCrossings(const geometry::Ring& ring, const std::vector<
 }
 
 void addLoop(SplitRing& out, geometry::Ring vertices, int crossing) {
-  if (vertices.size() < 3)
+  const double area = vertices.size() < 3 ? 0.0 : geometry::signedArea(vertices);
+  if (std::abs(area) < kZeroArea) {
+    if (crossing >= 0) // the rest of the ring, when flat, is the whole ring: nothing to report
+      out.flat.push_back({std::move(vertices), area, crossing});
     return;
-  const double area = geometry::signedArea(vertices);
-  if (std::abs(area) < kZeroArea)
-    return;
+  }
   out.loops.push_back({std::move(vertices), area, crossing});
 }
 

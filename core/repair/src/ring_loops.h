@@ -26,10 +26,11 @@ struct Loop {
 };
 
 /// A ring cut at every self-intersection into loops, none of which crosses or touches itself.
-/// Loops of zero area (the two sides of a doubled-back stretch) are left out.
+/// Loops of zero area (the two sides of a stretch the ring runs twice) are set apart.
 struct SplitRing {
   std::vector<Crossing> crossings; ///< Distinct points, in the order of their first segment.
   std::vector<Loop> loops;
+  std::vector<Loop> flat; ///< Loops left out for having no area (a stretch run twice).
 };
 
 /// Finds where the segments of `ring` (without duplicate consecutive vertices) cross or touch

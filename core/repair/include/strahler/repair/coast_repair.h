@@ -55,7 +55,7 @@ struct RepairLimits {
 /// remove_spikes), splits each ring where it crosses or touches itself and keeps the area it
 /// encloses an odd number of times (the even-odd rule, as OGC make-valid does), subtracts the
 /// union of a polygon's holes from its outer ring, unites overlapping polygons, joins pieces
-/// that touch at a single point with a rhombus of at most 10 m across, and orients rings as
+/// that touch at a single point with a rhombus at most 10 m across, and orients rings as
 /// RFC 7946 asks. Rings that are already valid come back unchanged (the same vertices in the
 /// same order), except reversed if they ran the wrong way. Deterministic: the same input gives
 /// the same output on every machine. Areas in the report use the local scale of a sphere of
