@@ -112,10 +112,25 @@ struct RingResult {
   BgMulti area; ///< Always set (for the simple case too: the ring as a polygon).
 };
 
-void checkValid(const BgPolygon& polygon, const std::string& where) {
+/// The area a loop encloses by the even-odd rule. A loop is simple by construction, but where
+/// merged or rounded crossing points leave it touching itself it is split again (a few levels
+/// at most); Boost.Geometry's validity check decides.
+BgMulti evenOddArea(const geometry::Ring& loop, const std::string& where,
+                    const RepairLimits& limits, int depth = 0) {
+  const BgPolygon polygon = detail::polygonOf(loop);
   std::string reason;
-  if (!bg::is_valid(polygon, reason))
+  if (bg::is_valid(polygon, reason))
+    return {polygon};
+  auto split = detail::splitRing(loop, limits.maxCrossings);
+  if (depth >= 3 || !split.ok() || split.value().crossings.empty())
     throw std::runtime_error(where + ": a piece is not valid after splitting (" + reason + ")");
+  BgMulti area;
+  for (const detail::Loop& piece : split.value().loops) {
+    BgMulti next;
+    bg::sym_difference(area, evenOddArea(piece.vertices, where, limits, depth + 1), next);
+    area = std::move(next);
+  }
+  return area;
 }
 
 /// Repairs one ring on its own: spikes, duplicates, orientation, self-intersections.
@@ -167,14 +182,12 @@ base::Result<RingResult> repairRing(const geometry::Ring& raw, bool outer, const
   }
   // The even-odd rule: a point is inside when an odd number of loops enclose it.
   out.simple = false;
-  checkValid(out.area.front(), where);
+  out.area = evenOddArea(pieces.loops[main].vertices, where, limits);
   for (std::size_t k = 0; k < pieces.loops.size(); ++k) {
     if (k == main)
       continue;
-    const BgPolygon loop = detail::polygonOf(pieces.loops[k].vertices);
-    checkValid(loop, where);
     BgMulti next;
-    bg::sym_difference(out.area, loop, next);
+    bg::sym_difference(out.area, evenOddArea(pieces.loops[k].vertices, where, limits), next);
     out.area = std::move(next);
   }
   for (std::size_t k = 0; k < pieces.loops.size(); ++k) {

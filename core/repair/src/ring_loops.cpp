@@ -138,6 +138,13 @@ std::vector<Vec2> insertCrossings(const geometry::Ring& ring, const std::vector<
 }
 
 void addLoop(SplitRing& out, geometry::Ring vertices, int crossing) {
+  // Cutting at crossings can leave a loop that runs out and back along one line (where the
+  // ring itself did): such spikes enclose nothing.
+  if (vertices.size() >= 3) {
+    BgRing ring = toBgRing(vertices);
+    bg::remove_spikes(ring);
+    vertices = fromBgRing(ring);
+  }
   const double area = vertices.size() < 3 ? 0.0 : geometry::signedArea(vertices);
   if (std::abs(area) < kZeroArea) {
     if (crossing >= 0) // the rest of the ring, when flat, is the whole ring: nothing to report
