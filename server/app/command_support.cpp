@@ -21,6 +21,11 @@ int printUsage(const char* usage) {
   return 0;
 }
 
+void printRepairs(const input::WorldSpec& spec) {
+  for (const repair::Change& change : spec.repairs)
+    std::fprintf(stderr, "strahler: repaired: %s\n", repair::describe(change).c_str());
+}
+
 bool endsWith(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() &&
          s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;

@@ -63,21 +63,24 @@ const char* generateUsage() noexcept {
          "                         [--seed N] [--cache-dir DIR] [-o "
          "OUT.world|OUT.geojson|OUT.png]\n"
          "                         [--image OUT.png] [--image-size PX] [--max-area-km2 N]\n"
-         "                         [--max-extent-km N] [--json] [--quiet]\n"
+         "                         [--max-extent-km N] [--repair] [--json] [--quiet]\n"
          "Generates the world of a coastline (default: the embedded island), or loads it from the\n"
          "cache when the same inputs were generated before, and prints a summary. -o writes the\n"
          "world file, the river network as GeoJSON, or the network image (.png); --image writes\n"
          "the network over its blocks (PX: 64..8192, default 1600). The cache directory defaults\n"
          "to $STRAHLER_CACHE_DIR, $XDG_CACHE_HOME/strahler or ~/.cache/strahler.\n"
          "--max-area-km2 N (default 250000) and --max-extent-km N (default 2000) raise or lower\n"
-         "the size a coastline may have (land area, longest side of its bounding box).\n";
+         "the size a coastline may have (land area, longest side of its bounding box).\n"
+         "--repair mends a coastline's self-intersections, spikes, duplicate points, overlaps\n"
+         "and ring orientation instead of refusing it, and lists each change on stderr (kind,\n"
+         "lon/lat, area moved in km²; in the --json summary under \"repairs\").\n";
 }
 
 int runGenerate(const std::vector<std::string>& rawArgs) {
   auto parsed = CliArgs::parse("generate", rawArgs,
                                {"--coast", "--params", "--mouths", "--seed", "--cache-dir", "-o",
                                 "--image", "--image-size", kMaxAreaOption, kMaxExtentOption},
-                               {"--json", "--quiet", "--help", "-h"});
+                               {"--json", "--quiet", "--repair", "--help", "-h"});
   if (!parsed)
     return usageError(parsed.error(), generateUsage());
   const CliArgs& args = parsed.value();
@@ -99,6 +102,7 @@ int runGenerate(const std::vector<std::string>& rawArgs) {
   sources.paramsPath = args.get("--params").value_or("");
   sources.mouthsPath = args.get("--mouths").value_or("");
   sources.seed = seed.value();
+  sources.repair = args.has("--repair");
 
   auto limits = worldLimits(args);
   if (!limits)
@@ -106,6 +110,7 @@ int runGenerate(const std::vector<std::string>& rawArgs) {
   auto spec = input::loadWorldSpec(sources, limits.value());
   if (!spec)
     return fail(spec.error());
+  printRepairs(spec.value());
   base::StageTimer timer;
   TerminalProgress progress(args.has("--quiet"));
   auto world =
@@ -124,6 +129,7 @@ int runGenerate(const std::vector<std::string>& rawArgs) {
   WorldSummary summary = summarize(data, store::encodeWorld(data).size());
   summary.filePath = world.value().path;
   summary.fromCache = world.value().fromCache;
+  summary.repairs = spec.value().repairs;
   if (world.value().fromCache)
     summary.stages = timer.stages();
   if (!args.has("--quiet") || args.has("--json"))

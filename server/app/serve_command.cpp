@@ -33,7 +33,7 @@ constexpr const char* kServeUsage =
     "                      [--host 127.0.0.1] [--port 8080] [--threads N] [--workers N]\n"
     "                      [--cache-mb M] [--cache-dir DIR] [--web-root DIR] [--public-url URL]\n"
     "                      [--max-client-connections N] [--max-area-km2 N] [--max-extent-km N]\n"
-    "                      [--quiet]\n"
+    "                      [--repair] [--quiet]\n"
     "Serves worlds over HTTP: the viewer at /, TileJSON, Web Mercator and local tiles in every\n"
     "format, rivers.geojson, /health and /metrics. Without a world it loads (or generates)\n"
     "the world of --coast, or of the default island. SIGINT/SIGTERM drain and stop it.\n"
@@ -43,6 +43,7 @@ constexpr const char* kServeUsage =
     "tiles) behind a proxy; without it they use the address the client connected to, never\n"
     "the Host header.\n"
     "--max-area-km2 N, --max-extent-km N: the size a --coast may have (as `strahler generate`).\n"
+    "--repair: mend the --coast's topology defects and list each change (as `strahler generate`).\n"
     "--max-client-connections N (default 64) caps the connections of one client address (IPv6:\n"
     "one /64) among the 1,024 the server holds; at a cap the oldest idle or header-incomplete\n"
     "connection is closed to make room, else the new one gets 503. 0: no per-client cap (behind\n"
@@ -82,8 +83,10 @@ loadWorlds(const CliArgs& args) {
   sources.coastPath = args.get("--coast").value_or("");
   sources.paramsPath = args.get("--params").value_or("");
   sources.seed = seed.value();
+  sources.repair = args.has("--repair");
   STRAHLER_ASSIGN_OR_RETURN(const input::InputLimits limits, worldLimits(args));
   STRAHLER_ASSIGN_OR_RETURN(input::WorldSpec spec, input::loadWorldSpec(sources, limits));
+  printRepairs(spec);
   TerminalProgress progress(args.has("--quiet"));
   STRAHLER_ASSIGN_OR_RETURN(LoadedWorld loaded,
                             loadOrGenerateWorld(spec,
@@ -113,7 +116,7 @@ int runServe(const std::vector<std::string>& raw) {
                      {"--coast", "--params", "--seed", "--host", "--port", "--threads", "--workers",
                       "--cache-mb", "--cache-dir", "--web-root", "--public-url",
                       "--max-client-connections", kMaxAreaOption, kMaxExtentOption},
-                     {"--quiet", "--help", "-h"});
+                     {"--quiet", "--repair", "--help", "-h"});
   if (!parsed)
     return usageError(parsed.error(), kServeUsage);
   const CliArgs& args = parsed.value();

@@ -102,35 +102,45 @@ std::string toJson(const WorldSummary& s) {
   nlohmann::json histogram = nlohmann::json::object();
   for (std::size_t k = 1; k < s.strahlerHistogram.size(); ++k)
     histogram[std::to_string(k)] = s.strahlerHistogram[k];
-  const nlohmann::json j = {{"name", s.name},
-                            {"cacheKey", s.cacheKey},
-                            {"generatorVersion", s.generatorVersion},
-                            {"seed", s.seed},
-                            {"areaKm2", s.areaKm2},
-                            {"islands", s.islands},
-                            {"lakes", s.lakes},
-                            {"mouths", s.mouths},
-                            {"nodes", s.nodes},
-                            {"edges", s.edges},
-                            {"blocks", s.blocks},
-                            {"networkLengthKm", s.networkLengthKm},
-                            {"strahlerHistogram", histogram},
-                            {"rosgen",
-                             {{"B", s.riverTypeCounts[0]},
-                              {"E", s.riverTypeCounts[1]},
-                              {"D", s.riverTypeCounts[2]},
-                              {"D-delta", s.riverTypeCounts[3]}}},
-                            {"primitives",
-                             {{"terrain", s.terrainPrimitives},
-                              {"river", s.riverPrimitives},
-                              {"riverCurvePoints", s.riverCurvePoints}}},
-                            {"maxRiverElevation", s.maxRiverElevation},
-                            {"maxTerrainElevation", s.maxTerrainElevation},
-                            {"maxFlow", s.maxFlow},
-                            {"bytes", s.fileBytes},
-                            {"bytesPerKm2", double(s.fileBytes) / std::max(s.areaKm2, 1e-9)},
-                            {"fromCache", s.fromCache},
-                            {"stageSeconds", stages}};
+  nlohmann::json j = {{"name", s.name},
+                      {"cacheKey", s.cacheKey},
+                      {"generatorVersion", s.generatorVersion},
+                      {"seed", s.seed},
+                      {"areaKm2", s.areaKm2},
+                      {"islands", s.islands},
+                      {"lakes", s.lakes},
+                      {"mouths", s.mouths},
+                      {"nodes", s.nodes},
+                      {"edges", s.edges},
+                      {"blocks", s.blocks},
+                      {"networkLengthKm", s.networkLengthKm},
+                      {"strahlerHistogram", histogram},
+                      {"rosgen",
+                       {{"B", s.riverTypeCounts[0]},
+                        {"E", s.riverTypeCounts[1]},
+                        {"D", s.riverTypeCounts[2]},
+                        {"D-delta", s.riverTypeCounts[3]}}},
+                      {"primitives",
+                       {{"terrain", s.terrainPrimitives},
+                        {"river", s.riverPrimitives},
+                        {"riverCurvePoints", s.riverCurvePoints}}},
+                      {"maxRiverElevation", s.maxRiverElevation},
+                      {"maxTerrainElevation", s.maxTerrainElevation},
+                      {"maxFlow", s.maxFlow},
+                      {"bytes", s.fileBytes},
+                      {"bytesPerKm2", double(s.fileBytes) / std::max(s.areaKm2, 1e-9)},
+                      {"fromCache", s.fromCache},
+                      {"stageSeconds", stages}};
+  if (!s.repairs.empty()) {
+    nlohmann::json repairs = nlohmann::json::array();
+    for (const repair::Change& change : s.repairs)
+      repairs.push_back({{"kind", repair::changeKindName(change.kind)},
+                         {"lon", change.lonLat.x},
+                         {"lat", change.lonLat.y},
+                         {"areaKm2", change.areaKm2},
+                         {"description", change.description}});
+    j["repairs"] = std::move(repairs);
+  }
   return j.dump(2);
 }
 

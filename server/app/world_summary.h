@@ -2,6 +2,7 @@
 
 #include "strahler/base/stage_timer.h"
 #include "strahler/construction/world_data.h"
+#include "strahler/repair/coast_repair.h"
 
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@ struct WorldSummary {
   std::string filePath;
   bool fromCache = false;
   std::vector<base::StageTime> stages;
+  std::vector<repair::Change> repairs; ///< What --repair changed; listed in JSON when any.
 };
 
 /// Collects the summary of a world whose file has `fileBytes` bytes.

@@ -18,10 +18,21 @@ using detail::Json;
 using detail::ParsedPolygon;
 using detail::ParsedRing;
 
+/// Invalid-input errors of the topology checks are all defects the repair mends.
+base::Status withRepairHint(base::Status status) {
+  if (status.ok() || status.error().code != ErrorCode::kInvalidInput)
+    return status;
+  base::Error error = std::move(status).error();
+  error.message += "; run with --repair to mend it";
+  return error;
+}
+
 /// Parses every ring of a coastline, counting vertices and rings against the limits.
 class CoastlineReader {
 public:
-  explicit CoastlineReader(const InputLimits& limits) : limits_(limits) {}
+  /// `raw`: keep rings exactly as given (for the repair) instead of dropping repeated
+  /// positions and refusing spikes.
+  CoastlineReader(const InputLimits& limits, bool raw) : limits_(limits), raw_(raw) {}
 
   base::Status readRoot(const Json& root) {
     if (!root.is_object())
@@ -158,21 +169,24 @@ private:
                                detail::formatNumber(first.y) + ")");
         break;
       }
-      if (!ring.vertices.empty() && ring.vertices.back() == v)
+      if (!raw_ && !ring.vertices.empty() && ring.vertices.back() == v)
         continue; // repeated position
       ring.vertices.push_back(v);
       ring.positions.push_back(static_cast<std::uint32_t>(i));
     }
     ring.closingPosition = static_cast<std::uint32_t>(n - 1);
+    if (raw_)
+      return ring;
     while (ring.vertices.size() > 1 && ring.vertices.back() == ring.vertices.front()) {
       ring.vertices.pop_back();
       ring.positions.pop_back();
     }
-    STRAHLER_RETURN_IF_ERROR(detail::checkRingShape(ring, where));
+    STRAHLER_RETURN_IF_ERROR(withRepairHint(detail::checkRingShape(ring, where)));
     return ring;
   }
 
   const InputLimits& limits_;
+  const bool raw_;
   std::vector<ParsedPolygon> polygons_;
   std::size_t vertices_ = 0;
   std::size_t rings_ = 0;
@@ -197,8 +211,9 @@ base::Status checkLongitudeSpan(const std::vector<ParsedPolygon>& polygons) {
   return base::Ok{};
 }
 
-base::Result<geometry::MultiPolygon> parseCoastlineUnguarded(std::string_view geojson,
-                                                             const InputLimits& limits) {
+/// The JSON, its structure and the longitude span: everything but the topology.
+base::Result<std::vector<ParsedPolygon>> readPolygons(std::string_view geojson,
+                                                      const InputLimits& limits, bool raw) {
   detail::JsonLimits jsonLimits;
   jsonLimits.maxBytes = limits.maxFileBytes;
   jsonLimits.maxDepth = limits.maxJsonDepth;
@@ -209,17 +224,27 @@ base::Result<geometry::MultiPolygon> parseCoastlineUnguarded(std::string_view ge
   jsonLimits.valuesNote = "the coastline is limited to " + std::to_string(limits.maxVertices) +
                           " vertices (limit maxVertices)";
   STRAHLER_ASSIGN_OR_RETURN(const Json root, detail::parseJson(geojson, "coastline", jsonLimits));
-  CoastlineReader reader(limits);
+  CoastlineReader reader(limits, raw);
   STRAHLER_RETURN_IF_ERROR(reader.readRoot(root));
   std::vector<ParsedPolygon>& polygons = reader.polygons();
   STRAHLER_RETURN_IF_ERROR(checkLongitudeSpan(polygons));
+  return std::move(polygons);
+}
+
+base::Status checkTopology(const std::vector<ParsedPolygon>& polygons) {
   std::size_t vertexCount = 0;
   for (const ParsedPolygon& p : polygons)
     for (const ParsedRing& r : p.rings)
       vertexCount += r.vertices.size();
   const std::uint64_t maxPairTests = 50'000'000u + 64u * std::uint64_t{vertexCount};
-  STRAHLER_RETURN_IF_ERROR(detail::checkTopology(polygons, maxPairTests));
+  return detail::checkTopology(polygons, maxPairTests);
+}
 
+base::Result<geometry::MultiPolygon> parseCoastlineUnguarded(std::string_view geojson,
+                                                             const InputLimits& limits) {
+  STRAHLER_ASSIGN_OR_RETURN(std::vector<ParsedPolygon> polygons,
+                            readPolygons(geojson, limits, false));
+  STRAHLER_RETURN_IF_ERROR(withRepairHint(checkTopology(polygons)));
   geometry::MultiPolygon result;
   result.reserve(polygons.size());
   for (ParsedPolygon& p : polygons) {
@@ -232,12 +257,77 @@ base::Result<geometry::MultiPolygon> parseCoastlineUnguarded(std::string_view ge
   return result;
 }
 
+/// The repaired land as parsed rings (positions: vertex indices), for the usual checks.
+std::vector<ParsedPolygon> asParsed(const geometry::MultiPolygon& land) {
+  std::vector<ParsedPolygon> polygons;
+  for (std::size_t p = 0; p < land.size(); ++p) {
+    ParsedPolygon polygon;
+    polygon.label = "repaired polygon " + std::to_string(p);
+    auto add = [&](const geometry::Ring& vertices) {
+      ParsedRing ring;
+      ring.vertices = vertices;
+      for (std::uint32_t i = 0; i < vertices.size(); ++i)
+        ring.positions.push_back(i);
+      ring.closingPosition = static_cast<std::uint32_t>(vertices.size());
+      polygon.rings.push_back(std::move(ring));
+    };
+    add(land[p].outer);
+    for (const geometry::Ring& hole : land[p].holes)
+      add(hole);
+    polygons.push_back(std::move(polygon));
+  }
+  return polygons;
+}
+
+base::Result<repair::RepairedCoast> parseAndRepairUnguarded(std::string_view geojson,
+                                                            const InputLimits& limits) {
+  STRAHLER_ASSIGN_OR_RETURN(std::vector<ParsedPolygon> parsed, readPolygons(geojson, limits, true));
+  std::vector<repair::InputPolygon> input;
+  input.reserve(parsed.size());
+  for (ParsedPolygon& p : parsed) {
+    repair::InputPolygon polygon;
+    polygon.label = std::move(p.label);
+    for (ParsedRing& ring : p.rings)
+      polygon.rings.push_back(std::move(ring.vertices));
+    input.push_back(std::move(polygon));
+  }
+  STRAHLER_ASSIGN_OR_RETURN(repair::RepairedCoast repaired, repair::repairCoastline(input));
+  const std::vector<ParsedPolygon> check = asParsed(repaired.land);
+  base::Status valid = base::Ok{};
+  for (const ParsedPolygon& p : check)
+    for (std::size_t r = 0; r < p.rings.size() && valid.ok(); ++r)
+      valid = detail::checkRingShape(p.rings[r],
+                                     "coastline: " + p.label + ", ring " + std::to_string(r));
+  if (valid.ok())
+    valid = checkTopology(check);
+  if (!valid.ok()) {
+    base::Error error = std::move(valid).error();
+    error.message = "coastline: the repair left a defect (a bug in strahler; please report "
+                    "it): " +
+                    error.message;
+    return error;
+  }
+  return repaired;
+}
+
 } // namespace
 
 base::Result<geometry::MultiPolygon> parseCoastline(std::string_view geojson,
                                                     const InputLimits& limits) {
   try {
     return parseCoastlineUnguarded(geojson, limits);
+  } catch (const std::bad_alloc&) {
+    return makeError(ErrorCode::kLimitExceeded, "coastline: out of memory");
+  } catch (const std::exception& e) {
+    return makeError(ErrorCode::kInternal,
+                     std::string("coastline: unexpected failure: ") + e.what());
+  }
+}
+
+base::Result<repair::RepairedCoast> parseAndRepairCoastline(std::string_view geojson,
+                                                            const InputLimits& limits) {
+  try {
+    return parseAndRepairUnguarded(geojson, limits);
   } catch (const std::bad_alloc&) {
     return makeError(ErrorCode::kLimitExceeded, "coastline: out of memory");
   } catch (const std::exception& e) {

@@ -4,7 +4,9 @@
 #include "strahler/geometry/polygon_index.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <numeric>
 #include <utility>
@@ -46,11 +48,32 @@ std::string describeSegment(const std::vector<ParsedPolygon>& polygons, const Se
          std::to_string(to) + ")";
 }
 
+/// A point common to two segments known to meet: where their lines cross, or for collinear
+/// segments an endpoint of one that lies on the other.
+Vec2 meetingPoint(const Segment& s, const Segment& t) noexcept {
+  const Vec2 u = s.b - s.a, v = t.b - t.a;
+  const double d = geometry::cross(u, v);
+  if (d != 0.0)
+    return s.a + u * (geometry::cross(t.a - s.a, v) / d);
+  for (const Vec2 p : {t.a, t.b})
+    if (s.box.contains(p))
+      return p;
+  return s.a;
+}
+
+/// "(-16.49001, 63.90021)": a place in degrees, to about a metre.
+std::string formatPlace(Vec2 p) {
+  std::array<char, 64> text{};
+  std::snprintf(text.data(), text.size(), "(%.5f, %.5f)", p.x, p.y);
+  return text.data();
+}
+
 base::Error crossingError(const std::vector<ParsedPolygon>& polygons, const Segment& s,
                           const Segment& t) {
   const std::string& label = polygons[s.polygon].label;
   const std::string first = describeSegment(polygons, s);
-  const std::string second = describeSegment(polygons, t);
+  const std::string second =
+      describeSegment(polygons, t) + " at " + formatPlace(meetingPoint(s, t));
   if (s.polygon == t.polygon && s.ring == t.ring)
     return makeError(ErrorCode::kInvalidInput,
                      "coastline: " + label + ", ring " + std::to_string(s.ring) +

@@ -29,9 +29,9 @@ struct ParsedPolygon {
 base::Status checkRingShape(const ParsedRing& ring, const std::string& where);
 
 /// Checks the whole coastline: no two segments touch or cross (except consecutive segments
-/// of one ring at their shared vertex), no ring has zero area, every hole lies inside its
-/// outer ring and outside
-/// the other holes, and no polygon lies inside another (islands in lakes are allowed).
+/// of one ring at their shared vertex; the error gives the place in degrees), no ring has
+/// zero area, every hole lies inside its outer ring and outside the other holes, and no
+/// polygon lies inside another (islands in lakes are allowed).
 /// Runs in about O(n log n) for n segments: a sparse grid with cells of about the mean
 /// segment length; inputs dense enough to need more than `maxPairTests` segment-pair tests
 /// are refused with kLimitExceeded rather than taking quadratic time.

@@ -152,12 +152,19 @@ base::Result<ConstraintMap> loadConstraint(const ConstraintSource& source, std::
 
 base::Result<WorldSpec> buildWorldSpec(std::string name, std::string_view coastGeoJson,
                                        const Params& params, const fs::path& imageDir,
-                                       const InputLimits& limits) {
+                                       const InputLimits& limits, bool repair) {
   STRAHLER_RETURN_IF_ERROR(validateParams(params));
   WorldSpec spec;
   spec.name = std::move(name);
   spec.params = params;
-  STRAHLER_ASSIGN_OR_RETURN(spec.landLonLat, parseCoastline(coastGeoJson, limits));
+  if (repair) {
+    STRAHLER_ASSIGN_OR_RETURN(repair::RepairedCoast repaired,
+                              parseAndRepairCoastline(coastGeoJson, limits));
+    spec.landLonLat = std::move(repaired.land);
+    spec.repairs = std::move(repaired.changes);
+  } else {
+    STRAHLER_ASSIGN_OR_RETURN(spec.landLonLat, parseCoastline(coastGeoJson, limits));
+  }
   STRAHLER_RETURN_IF_ERROR(projectLand(spec, limits));
   const geometry::Aabb landBox = geometry::bounds(spec.landLonLat);
   for (std::size_t i = 0; i < params.constraints.size(); ++i) {
@@ -194,7 +201,7 @@ base::Result<WorldSpec> loadWorldSpecUnguarded(const WorldSources& sources,
     params.seed = *sources.seed;
   const std::string_view coast =
       sources.coastPath.empty() ? defaultCoastlineGeoJson() : std::string_view(coastText);
-  auto built = buildWorldSpec(std::move(name), coast, params, imageDir, limits);
+  auto built = buildWorldSpec(std::move(name), coast, params, imageDir, limits, sources.repair);
   if (!built.ok()) {
     base::Error error = std::move(built).error();
     // Coastline faults are in the coastline file, constraint faults in the params file.
@@ -245,9 +252,10 @@ std::optional<double> WorldSpec::constraintAt(ConstraintKind kind,
 }
 
 base::Result<WorldSpec> makeWorldSpec(std::string name, std::string_view coastGeoJson,
-                                      const Params& params, const InputLimits& limits) {
+                                      const Params& params, const InputLimits& limits,
+                                      bool repair) {
   try {
-    return buildWorldSpec(std::move(name), coastGeoJson, params, fs::path(), limits);
+    return buildWorldSpec(std::move(name), coastGeoJson, params, fs::path(), limits, repair);
   } catch (const std::bad_alloc&) {
     return makeError(ErrorCode::kLimitExceeded, "world: out of memory");
   } catch (const std::exception& e) {

@@ -58,6 +58,45 @@ TEST(CacheKey, SeedParamsCoastlineAndVersionChangeTheKey) {
   EXPECT_NE(cacheKey(makeSpec(), "0.1.1"), base);
 }
 
+/// GeoJSON of a coastline, every number written so that it reads back exactly.
+std::string multiPolygonGeoJson(const geometry::MultiPolygon& land) {
+  auto ring = [](const geometry::Ring& r) {
+    std::string out = "[";
+    for (std::size_t i = 0; i <= r.size(); ++i) {
+      const geometry::Vec2 v = r[i % r.size()];
+      out += (i ? ",[" : "[") + shortest(v.x) + "," + shortest(v.y) + "]";
+    }
+    return out + "]";
+  };
+  std::string out = R"({"type":"MultiPolygon","coordinates":[)";
+  for (std::size_t p = 0; p < land.size(); ++p) {
+    out += (p ? ",[" : "[") + ring(land[p].outer);
+    for (const geometry::Ring& hole : land[p].holes)
+      out += "," + ring(hole);
+    out += "]";
+  }
+  return out + "]}";
+}
+
+TEST(CacheKey, RepairedCoastIsKeyedByItsGeometryAlone) {
+  // A bow tie: --repair keeps both lobes and joins them where they cross.
+  const std::string bowtie =
+      R"({"type":"Polygon","coordinates":[[[8.5,42],[8.6,42.1],[8.6,42],[8.5,42.1],[8.5,42]]]})";
+  const std::string other =
+      R"({"type":"Polygon","coordinates":[[[8.5,42],[8.6,42.1],[8.6,42],[8.5,42.11],[8.5,42]]]})";
+  auto repaired = input::makeWorldSpec("bowtie", bowtie, {}, {}, true);
+  auto repairedOther = input::makeWorldSpec("other", other, {}, {}, true);
+  ASSERT_TRUE(repaired.ok() && repairedOther.ok());
+  ASSERT_FALSE(repaired.value().repairs.empty());
+  const std::string key = cacheKey(repaired.value(), kVersion);
+  EXPECT_NE(cacheKey(repairedOther.value(), kVersion), key);
+  // The same geometry given as a valid coastline (no repair needed) shares the key: the key
+  // follows the land, not how it was obtained.
+  auto same = input::makeWorldSpec("same", multiPolygonGeoJson(repaired.value().landLonLat), {});
+  ASSERT_TRUE(same.ok()) << same.error().message;
+  EXPECT_EQ(cacheKey(same.value(), kVersion), key);
+}
+
 TEST(CacheKey, UserMouthsChangeTheKey) {
   input::WorldSpec spec = makeSpec();
   const std::string base = cacheKey(spec, kVersion);

@@ -6,6 +6,7 @@
 #include "strahler/image/image.h"
 #include "strahler/input/limits.h"
 #include "strahler/input/params.h"
+#include "strahler/repair/coast_repair.h"
 
 #include <optional>
 #include <string>
@@ -38,6 +39,9 @@ struct WorldSpec {
   Params params;
   std::vector<UserMouth> mouths;
   std::vector<ConstraintMap> constraints;
+  /// What --repair changed in the coastline (empty without it, or when nothing needed it).
+  /// landLonLat is the repaired coastline, so the cache key follows the repaired geometry.
+  std::vector<repair::Change> repairs;
 
   /// Land area in km².
   double areaKm2() const noexcept;
@@ -51,20 +55,24 @@ struct WorldSources {
   std::string paramsPath; ///< params JSON file; empty: defaults.
   std::string mouthsPath; ///< GeoJSON Points with a "priority" property; empty: automatic.
   std::optional<std::uint64_t> seed; ///< Overrides params' seed when set.
+  bool repair = false; ///< Mend the coastline's topology defects instead of refusing them.
 };
 
 /// Reads, validates and projects every input named by `sources`. Constraint images are
 /// listed in the params JSON under "constraints" (paths relative to the params file).
-/// Missing files are kNotFound and unreadable ones kIoError, naming the path; faults inside
-/// a file are prefixed with its path. Mouths: a GeoJSON FeatureCollection (or one Feature)
-/// of Point or MultiPoint geometries with an optional integer "priority" property ≥ 1.
-/// The land must measure at most limits.maxExtentKm on each side of its bounding box and
+/// With `sources.repair` the coastline is read by parseAndRepairCoastline and the changes are
+/// listed in WorldSpec::repairs. Missing files are kNotFound and unreadable ones kIoError, naming
+/// the path; faults inside a file are prefixed with its path. Mouths: a GeoJSON FeatureCollection
+/// (or one Feature) of Point or MultiPoint geometries with an optional integer "priority" property
+/// ≥ 1. The land must measure at most limits.maxExtentKm on each side of its bounding box and
 /// limits.maxAreaKm2 in area (kLimitExceeded, giving both numbers).
 base::Result<WorldSpec> loadWorldSpec(const WorldSources& sources, const InputLimits& limits = {});
 
 /// Builds a spec from in-memory inputs (coastline GeoJSON in degrees, parsed params, which
 /// are validated again); constraint image paths are taken relative to the working directory.
+/// `repair` as WorldSources::repair.
 base::Result<WorldSpec> makeWorldSpec(std::string name, std::string_view coastGeoJson,
-                                      const Params& params, const InputLimits& limits = {});
+                                      const Params& params, const InputLimits& limits = {},
+                                      bool repair = false);
 
 } // namespace strahler::input
