@@ -56,8 +56,8 @@ base::Result<WorldData> generateWorldData(const input::WorldSpec& spec, std::str
   data.params = spec.params;
   data.projectionCenter = spec.projection.center();
   data.land = quantizeLand(spec.land);
-  data.rivers =
-      primitives::generateRiverPrimitives(spec.params, hydrology.network, hydrology.analysis);
+  data.rivers = primitives::generateRiverPrimitives(spec.params, hydrology.network,
+                                                    hydrology.analysis, *hydrology.land);
   const auto terrainByBlock = primitives::generateTerrainPrimitives(spec, hydrology, data.rivers);
   if (progress)
     progress("primitives", 0.9);

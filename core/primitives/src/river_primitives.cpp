@@ -1,6 +1,7 @@
 #include "strahler/primitives/river_primitives.h"
 
 #include "strahler/base/random.h"
+#include "strahler/geometry/distance.h"
 #include "strahler/primitives/quantization.h"
 
 #include <algorithm>
@@ -15,6 +16,9 @@ using geometry::Vec2;
 constexpr double kPi = std::numbers::pi;
 constexpr std::uint64_t kRiverStream = 0x7269766572ull;
 constexpr double kMinMeanderWavelength = 200.0; // m: keeps curves within the file budget
+/// Share of δ a river's curve keeps from Γ (keepClearOfShore): 150 m by default, where the
+/// coast's cap (World::CoastShape) allows a bed about 160 m up.
+constexpr double kShoreClearance = 0.5;
 
 /// The inflow of `node` that continues straight through it: highest Strahler number, then
 /// highest flow, then lowest id. Invalid for a leaf.
@@ -154,8 +158,26 @@ void perturb(std::vector<Vec2>& points, const Meander& m) {
   points = std::move(out);
 }
 
+/// Pulls the points back toward the straight edge [a, b] where the smoothing or the meander
+/// took them nearer to Γ than `clearance` (or than the edge itself lies there): near the shore
+/// the coast's cap holds every height below the shore distance, so a bed 55 m up passing 18 m
+/// from a fjord's shore dipped to 18 m and rose again (Iceland, 248 profile violations).
+void keepClearOfShore(std::vector<Vec2>& points, Vec2 a, Vec2 b, const geometry::PolygonIndex& land,
+                      double clearance) {
+  for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+    const Vec2 q = geometry::closestPointOnSegment(points[i], a, b);
+    const double needed = std::min(clearance, land.distanceToBoundary(q, clearance));
+    for (int halving = 0; halving < 6 && land.distanceToBoundary(points[i], needed) < needed;
+         ++halving)
+      points[i] = geometry::lerp(q, points[i], 0.5);
+    if (land.distanceToBoundary(points[i], needed) < needed)
+      points[i] = q;
+  }
+}
+
 RiverPrimitive buildSection(const input::Params& params, const network::RiverNetwork& net,
-                            const analysis::NetworkAnalysis& a, network::NodeId id) {
+                            const analysis::NetworkAnalysis& a, const geometry::PolygonIndex& land,
+                            network::NodeId id) {
   const network::RiverNode& node = net.node(id);
   RiverPrimitive r;
   r.node = id;
@@ -176,6 +198,8 @@ RiverPrimitive buildSection(const input::Params& params, const network::RiverNet
   points = resample(points,
                     std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(length / step))));
   perturb(points, meander);
+  keepClearOfShore(points, node.position, net.node(node.parent).position, land,
+                   kShoreClearance * params.delta);
 
   // u_z falls linearly with arc length from the upstream node to the downstream one.
   const double zUp = node.elevation, zDown = net.node(node.parent).elevation;
@@ -231,12 +255,13 @@ double valleyRadius(RiverType type, double width) noexcept {
 
 std::vector<RiverPrimitive> generateRiverPrimitives(const input::Params& params,
                                                     const network::RiverNetwork& network,
-                                                    const analysis::NetworkAnalysis& analysis) {
+                                                    const analysis::NetworkAnalysis& analysis,
+                                                    const geometry::PolygonIndex& land) {
   std::vector<RiverPrimitive> rivers;
   rivers.reserve(network.edgeCount());
   for (std::uint32_t i = 0; i < network.nodes.size(); ++i)
     if (network.nodes[i].parent.valid())
-      rivers.push_back(buildSection(params, network, analysis, network::NodeId(i)));
+      rivers.push_back(buildSection(params, network, analysis, land, network::NodeId(i)));
   return rivers;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "strahler/analysis/network_analysis.h"
+#include "strahler/geometry/polygon_index.h"
 #include "strahler/input/params.h"
 #include "strahler/network/river_network.h"
 #include "strahler/primitives/river_primitive.h"
@@ -129,9 +130,11 @@ inline double riverWeight(double width, double radius, double d, double floor = 
 /// smoothed, subdivided below 50 m and perturbed by type (B nearly straight, E meanders of
 /// wavelength ~11 widths, D braided jitter, deltas straight); u_z falls linearly with arc
 /// length from the upstream node to the downstream node, and width and depth vary from the
-/// upstream node's flow to the downstream node's, so sections agree where they meet.
+/// upstream node's flow to the downstream node's, so sections agree where they meet. Curve
+/// points keep half of δ from the shore of `land` (or as much as their straight edge does).
 std::vector<RiverPrimitive> generateRiverPrimitives(const input::Params& params,
                                                     const network::RiverNetwork& network,
-                                                    const analysis::NetworkAnalysis& analysis);
+                                                    const analysis::NetworkAnalysis& analysis,
+                                                    const geometry::PolygonIndex& land);
 
 } // namespace strahler::primitives
