@@ -147,7 +147,8 @@ TEST(ServeCommand, SlowReadersOfLargeTilesDoNotStopOthersAndMemoryStaysBounded) 
               warm, held, tally(statuses).c_str(), othersSeconds, slowest);
   EXPECT_EQ(statuses[200], 200) << tally(statuses);
   EXPECT_GE(sockets, kSlowReaders) << "the slow readers were dropped, not held";
-  EXPECT_LT(slowest, 2.0) << "a normal request waited behind the slow readers";
+  // 0.02-0.06 s on a quiet machine; the bound leaves room for a machine busy with other work.
+  EXPECT_LT(slowest, 5.0) << "a normal request waited behind the slow readers";
   EXPECT_LE(held - warm, kCacheMb + kRssSlackMb)
       << "RSS " << warm << " MB before the slow readers, " << held << " MB with them";
   ASSERT_TRUE(after);
