@@ -12,6 +12,8 @@ packages=(
   nlohmann-json3-dev
   libprotobuf-dev protobuf-compiler
   googletest libgtest-dev libbenchmark-dev
+  # clang and its runtimes (libFuzzer, sanitizers) for the fuzz harnesses: scripts/fuzz.sh
+  clang libclang-rt-14-dev
   chromium
 )
 

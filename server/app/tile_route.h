@@ -1,6 +1,6 @@
 #pragma once
 
-#include "tile_service.h"
+#include "tile_format.h"
 
 #include "strahler/base/result.h"
 

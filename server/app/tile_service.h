@@ -1,5 +1,7 @@
 #pragma once
 
+#include "tile_format.h"
+
 #include "strahler/base/result.h"
 #include "strahler/construction/world.h"
 #include "strahler/tiling/tile_evaluator.h"
@@ -8,23 +10,6 @@
 #include <string>
 
 namespace strahler::app {
-
-/// Every tile format strahler serves.
-enum class TileFormat { kTerrainRgb, kTerrarium, kPng16, kTiff, kExr, kDraco, kGlb };
-
-/// Size bounds: raster tiles have size² pixels, mesh tiles size² quads ((size+1)² vertices).
-struct TileSizes {
-  static constexpr int kRasterMin = 16, kRasterMax = 1024, kRasterDefault = 256;
-  static constexpr int kMeshMin = 4, kMeshMax = 256, kMeshDefault = 64;
-};
-
-/// One tile to make.
-struct TileRequest {
-  tiling::SchemeKind scheme = tiling::SchemeKind::kWebMercator;
-  tiling::TileId tile;
-  TileFormat format = TileFormat::kTerrainRgb;
-  int size = 0; ///< 0: the format's default.
-};
 
 /// A finished tile with what it cost.
 struct RenderedTile {
@@ -39,13 +24,6 @@ struct RenderedTile {
 /// thousandth of the vertex spacing on coarse tiles (kilometre-wide tiles cannot keep 1 cm in
 /// float32 coordinates).
 double meshPositionError(double vertexSpacing) noexcept;
-
-/// Parses a format name as used in URLs and on the command line: png (Terrain-RGB),
-/// terrarium, png16, tif, exr, drc, glb.
-base::Result<TileFormat> parseTileFormat(const std::string& name);
-
-/// True for the mesh formats (drc, glb).
-bool isMeshFormat(TileFormat format) noexcept;
 
 /// Makes tiles of one world: both pyramids, every format. Thread-safe.
 class TileService {

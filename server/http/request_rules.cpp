@@ -4,6 +4,7 @@
 
 #include <boost/beast/http/error.hpp>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -184,6 +185,31 @@ Verdict checkParseError(const ErrorCode& ec, const RequestParser& parser, std::s
   if (ec == bhttp::error::bad_version)
     return checkVersionError(received);
   return reject(400, parseErrorMessage(ec), true);
+}
+
+bool isParseError(const ErrorCode& ec) {
+  static const auto& category = bhttp::make_error_code(bhttp::error::bad_target).category();
+  return ec.category() == category && ec != bhttp::error::end_of_stream &&
+         ec != bhttp::error::partial_message;
+}
+
+Request makeRequest(const bhttp::request_header<>& header, bool head,
+                    const std::string& localAddress,
+                    const std::shared_ptr<std::atomic<bool>>& clientGone) {
+  Request request;
+  request.localAddress = localAddress;
+  request.clientGone = clientGone;
+  request.method = "GET";
+  request.head = head;
+  request.target = std::string(header.target());
+  for (const auto& field : header) {
+    std::string name(field.name_string());
+    std::transform(name.begin(), name.end(), name.begin(), [](char c) {
+      return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+    });
+    request.headers.emplace_back(std::move(name), std::string(field.value()));
+  }
+  return request;
 }
 
 } // namespace strahler::http::detail

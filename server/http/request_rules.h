@@ -4,6 +4,9 @@
 #include "http_types.h"
 #include "net.h"
 
+#include <atomic>
+#include <memory>
+#include <string>
 #include <string_view>
 
 namespace strahler::http::detail {
@@ -34,5 +37,15 @@ Verdict checkRequest(const RequestParser& parser, const ServerOptions& options);
 /// line (400).
 Verdict checkParseError(const ErrorCode& ec, const RequestParser& parser, std::string_view received,
                         const ServerOptions& options);
+
+/// True for a parser error that deserves an answer (checkParseError); end of stream, a truncated
+/// message (the peer closed) and socket errors do not.
+bool isParseError(const ErrorCode& ec);
+
+/// The handler's view of a parsed request header: target as sent, header names lower-cased,
+/// method "GET" (`head` tells HEAD apart). Only for requests checkRequest() forwards.
+Request makeRequest(const bhttp::request_header<>& header, bool head,
+                    const std::string& localAddress,
+                    const std::shared_ptr<std::atomic<bool>>& clientGone);
 
 } // namespace strahler::http::detail

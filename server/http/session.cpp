@@ -34,33 +34,6 @@ constexpr Clock::duration kLingerTimeout = std::chrono::milliseconds(500);
 constexpr Clock::duration kDrainingLingerTimeout = std::chrono::milliseconds(100);
 constexpr std::size_t kMaxLingerBytes = 64 * 1024;
 
-/// A parser error that deserves an answer; end of stream and a truncated message (the peer
-/// closed) and socket errors do not.
-bool isParseError(const ErrorCode& ec) {
-  static const auto& category = bhttp::make_error_code(bhttp::error::bad_target).category();
-  return ec.category() == category && ec != bhttp::error::end_of_stream &&
-         ec != bhttp::error::partial_message;
-}
-
-Request makeRequest(const bhttp::request_header<>& header, bool head,
-                    const std::string& localAddress,
-                    const std::shared_ptr<std::atomic<bool>>& clientGone) {
-  Request request;
-  request.localAddress = localAddress;
-  request.clientGone = clientGone;
-  request.method = "GET";
-  request.head = head;
-  request.target = std::string(header.target());
-  for (const auto& field : header) {
-    std::string name(field.name_string());
-    std::transform(name.begin(), name.end(), name.begin(), [](char c) {
-      return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
-    });
-    request.headers.emplace_back(std::move(name), std::string(field.value()));
-  }
-  return request;
-}
-
 /// `endpoint` as a URL authority: "a.b.c.d:port" (IPv4-mapped IPv6 too) or "[v6]:port".
 std::string urlAuthority(const tcp::endpoint& endpoint) {
   const net::ip::address address = endpoint.address();

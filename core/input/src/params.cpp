@@ -243,7 +243,10 @@ base::Result<Params> parseParamsUnguarded(std::string_view json, const InputLimi
   known.push_back("constraints");
 
   Params params;
-  for (const auto& [key, value] : root.items()) {
+  for (const auto& item : root.items()) {
+    // Named, not a structured binding: clang 14 (the fuzz preset) cannot capture bindings.
+    const std::string& key = item.key();
+    const Json& value = item.value();
     const auto field =
         std::find_if(kFields.begin(), kFields.end(), [&](const Field& f) { return key == f.name; });
     if (field != kFields.end()) {

@@ -1,0 +1,107 @@
+// libFuzzer harness: the bytes a client sends on one connection, handled as
+// server/http/session.cpp handles them: Beast's header parser with the server's limits, the
+// protocol rules (checkRequest / checkParseError), the response as written (toWireResponse,
+// appendHead), and for forwarded requests the router's parsers (parseTarget, parseTileRoute)
+// with JSON error answers quoting the client's bytes. Pipelined requests are followed while the
+// connection would stay open. (The tile server itself needs a world and the terrain code:
+// tests/app covers its dispatch.)
+#include "request_rules.h"
+#include "route_parser.h"
+#include "tile_route.h"
+#include "wire_response.h"
+
+#include <boost/asio/buffer.hpp>
+
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <utility>
+
+namespace {
+
+using namespace strahler::http::detail;
+
+/// Pipelined requests followed per input, as a session's queue allows.
+constexpr int kMaxRequests = 16;
+
+/// Writes `response` as the session would; aborts (a crash for libFuzzer) on a broken head.
+void writeResponse(strahler::http::Response response, unsigned version, bool head, bool keepAlive) {
+  const WireResponse wire = toWireResponse(std::move(response), version, head);
+  std::string out;
+  appendHead(out, wire, keepAlive, "Thu, 01 Jan 1970 00:00:00 GMT");
+  if (wire.status < 200 || wire.status > 599 || out.size() < 4 ||
+      out.compare(out.size() - 4, 4, "\r\n\r\n") != 0 || out.find("\r\n\r\n") != out.size() - 4)
+    std::abort();
+}
+
+/// The router's parsing of a forwarded request, answered as a server without worlds would
+/// (tile routes parsed in full first); true when the answer closes the connection.
+bool route(const strahler::http::Request& request, unsigned version, bool keepAlive) {
+  strahler::http::Response response;
+  const auto parsed = strahler::app::parseTarget(request.target);
+  if (!parsed) {
+    response = strahler::http::errorResponse(400, parsed.error().message);
+    response.close = true;
+  } else if (const auto& s = parsed.value().segments; s.size() == 6 && s[0] == "worlds") {
+    const auto tile = strahler::app::parseTileRoute(s[1], s, parsed.value().query);
+    if (!tile) {
+      response = strahler::http::errorResponse(400, tile.error().message);
+      response.close = true;
+    } else {
+      response.headers = {{"Content-Type", "application/octet-stream"},
+                          {"X-Tile-Key", tile.value().key}}; // client bytes in a header
+      response.body = strahler::app::canonicalFormatName(tile.value().request.format);
+    }
+  } else if (s.size() >= 2 && s[0] == "worlds") {
+    response = strahler::http::errorResponse(404, "unknown world '" + s[1].substr(0, 64) + "'");
+  } else {
+    response = strahler::http::errorResponse(404, "not found");
+  }
+  const bool close = response.close;
+  writeResponse(std::move(response), version, request.head, keepAlive && !close);
+  return close;
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const strahler::http::ServerOptions options; // the production limits
+  std::string_view input(reinterpret_cast<const char*>(data), size);
+  for (int n = 0; n < kMaxRequests && !input.empty(); ++n) {
+    RequestParser parser;
+    parser.header_limit(static_cast<std::uint32_t>(options.maxHeaderBytes));
+    parser.body_limit(std::numeric_limits<std::uint64_t>::max());
+    ErrorCode ec;
+    const std::size_t used = parser.put(boost::asio::buffer(input.data(), input.size()), ec);
+    if (ec == boost::beast::http::error::need_more)
+      return 0; // the rest never comes: the connection ends without an answer
+    if (ec) {
+      if (!isParseError(ec))
+        return 0;
+      const Verdict verdict = checkParseError(ec, parser, input.substr(used), options);
+      if (verdict.kind != Verdict::Kind::kReject || !verdict.close)
+        std::abort(); // a parse error is always answered and closes
+      writeResponse(verdict.response, 11, false, false);
+      return 0;
+    }
+    if (!parser.is_header_done())
+      return 0;
+    input.remove_prefix(used);
+    const auto& header = parser.get();
+    const Verdict verdict = checkRequest(parser, options);
+    const bool head = header.method() == boost::beast::http::verb::head;
+    bool keepAlive = header.keep_alive() && !verdict.close;
+    const unsigned version = header.version() == 10 ? 10 : 11;
+    if (verdict.kind == Verdict::Kind::kForward)
+      keepAlive =
+          !route(makeRequest(header, head, "127.0.0.1:8080", nullptr), version, keepAlive) &&
+          keepAlive;
+    else
+      writeResponse(verdict.response, version, head, keepAlive);
+    if (!keepAlive)
+      return 0;
+  }
+  return 0;
+}
