@@ -45,7 +45,7 @@ constexpr const char* kAnalyzeUsage =
     "--dem: the relief figures of a real DEM instead: an ESRI ASCII grid (.asc; --cell-size\n"
     "replaces its cellsize, e.g. for a grid in degrees) or any raster OpenImageIO reads\n"
     "(heights in metres; --cell-size M, metres > 0, required). NODATA cells count as outside.\n"
-    "A world's raster may hold at most 60 million cells (about 3.5 GB); larger worlds need a\n"
+    "A world's raster may hold at most 60 million cells (up to about 7 GB); larger worlds need a\n"
     "larger --cell-size (e.g. 120 for 100,000 km²).\n";
 
 constexpr const char* kTileUsage =
@@ -55,7 +55,8 @@ constexpr const char* kTileUsage =
     "quadtree. png is Terrain-RGB. N: pixels per side for rasters (16..1024, default 256),\n"
     "quads per side for meshes (4..256, default 64).\n";
 
-/// The most raster cells `analyze` evaluates (about 55 bytes each at its peak).
+/// The most raster cells `analyze` evaluates (55 bytes each at its peak on Mallorca at 30 m,
+/// 113 on Iceland at 120 m).
 constexpr double kMaxAnalysisCells = 60e6;
 
 int threadCount() {

@@ -1,4 +1,5 @@
 // Runs the real strahler program as a user would, and checks its outputs and exit codes.
+#include "program_run.h"
 #include "test_client.h"
 
 #include <gtest/gtest.h>
@@ -26,12 +27,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using strahler::http::test::readLine;
-
-struct ProcessRun {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
+using strahler::testing::ProcessRun;
+using strahler::testing::runProgram;
 
 fs::path scratchDir() {
   // One folder per process: CTest runs these tests in parallel processes.
@@ -48,24 +45,9 @@ std::string readFile(const fs::path& path) {
   return text.str();
 }
 
+/// Runs strahler with `args`, a cache in the build tree, and collects its output.
 ProcessRun strahler(const std::string& args) {
-  const fs::path errPath = scratchDir() / "stderr.txt";
-  // Every run uses a cache inside the build tree, never the user's.
-  const std::string command = "STRAHLER_CACHE_DIR=" + (scratchDir() / "cache").string() + " " +
-                              std::string(STRAHLER_EXECUTABLE) + " " + args + " 2>" +
-                              errPath.string();
-  ProcessRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe)
-    return run;
-  std::array<char, 4096> buffer{};
-  std::size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-    run.out.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.err = readFile(errPath);
-  return run;
+  return runProgram(STRAHLER_EXECUTABLE, args, scratchDir());
 }
 
 fs::path writeScratch(const std::string& name, const std::string& text) {

@@ -1,5 +1,6 @@
 // `--repair` on the real program: Natural Earth's Iceland (which crosses itself once) through
 // `generate`, and a bow-tie island through `serve --coast`.
+#include "program_run.h"
 #include "test_client.h"
 
 #include <gtest/gtest.h>
@@ -21,6 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using strahler::http::test::readLine;
+using strahler::testing::ProcessRun;
+using strahler::testing::runProgram;
 
 fs::path scratchDir() {
   const fs::path dir =
@@ -29,33 +32,9 @@ fs::path scratchDir() {
   return dir;
 }
 
-struct ProcessRun {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
 /// Runs strahler with `args`, a cache in the build tree, and collects its output.
 ProcessRun strahler(const std::string& args) {
-  const fs::path errPath = scratchDir() / "stderr.txt";
-  const std::string command = "STRAHLER_CACHE_DIR=" + (scratchDir() / "cache").string() + " " +
-                              std::string(STRAHLER_EXECUTABLE) + " " + args + " 2>" +
-                              errPath.string();
-  ProcessRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe)
-    return run;
-  std::array<char, 4096> buffer{};
-  std::size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-    run.out.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(errPath);
-  std::ostringstream text;
-  text << in.rdbuf();
-  run.err = text.str();
-  return run;
+  return runProgram(STRAHLER_EXECUTABLE, args, scratchDir());
 }
 
 const std::string kIceland = std::string(STRAHLER_TEST_DATA_DIR) + "/iceland.geojson";

@@ -310,12 +310,10 @@ base::Result<repair::RepairedCoast> parseAndRepairUnguarded(std::string_view geo
   return repaired;
 }
 
-} // namespace
-
-base::Result<geometry::MultiPolygon> parseCoastline(std::string_view geojson,
-                                                    const InputLimits& limits) {
+/// fn()'s result, or an error when it throws: out of memory, or an unexpected failure.
+template <class Fn> auto guarded(Fn&& fn) -> decltype(fn()) {
   try {
-    return parseCoastlineUnguarded(geojson, limits);
+    return fn();
   } catch (const std::bad_alloc&) {
     return makeError(ErrorCode::kLimitExceeded, "coastline: out of memory");
   } catch (const std::exception& e) {
@@ -324,16 +322,16 @@ base::Result<geometry::MultiPolygon> parseCoastline(std::string_view geojson,
   }
 }
 
+} // namespace
+
+base::Result<geometry::MultiPolygon> parseCoastline(std::string_view geojson,
+                                                    const InputLimits& limits) {
+  return guarded([&] { return parseCoastlineUnguarded(geojson, limits); });
+}
+
 base::Result<repair::RepairedCoast> parseAndRepairCoastline(std::string_view geojson,
                                                             const InputLimits& limits) {
-  try {
-    return parseAndRepairUnguarded(geojson, limits);
-  } catch (const std::bad_alloc&) {
-    return makeError(ErrorCode::kLimitExceeded, "coastline: out of memory");
-  } catch (const std::exception& e) {
-    return makeError(ErrorCode::kInternal,
-                     std::string("coastline: unexpected failure: ") + e.what());
-  }
+  return guarded([&] { return parseAndRepairUnguarded(geojson, limits); });
 }
 
 } // namespace strahler::input

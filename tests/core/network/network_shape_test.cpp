@@ -38,15 +38,16 @@ struct ShapeFigures {
   double farShare() const { return samples ? double(farSamples) / double(samples) : 0.0; }
 };
 
-/// Distance from p to the nearest node, searching rings of grid cells outwards.
-double nearestNodeDistance(const RiverNetwork& net, const geometry::GridIndex& grid,
-                           geometry::Vec2 p) {
+/// The least distanceTo(id) over the ids of `grid` near p, searching rings of cells outwards
+/// (items are registered by their boxes, so an id within `reach` lies in the searched cells).
+template <class DistanceTo>
+double nearestInGrid(const geometry::GridIndex& grid, geometry::Vec2 p, DistanceTo&& distanceTo) {
   double best = std::numeric_limits<double>::infinity();
   for (double reach = grid.cellSize();; reach *= 2.0) {
     geometry::Aabb box;
     box.add(p);
     grid.query(box.expanded(reach), [&](std::uint32_t i) {
-      best = std::min(best, geometry::distance(net.nodes[i].position, p));
+      best = std::min(best, distanceTo(i));
       return true;
     });
     if (best <= reach || reach > 1e6)
@@ -54,23 +55,21 @@ double nearestNodeDistance(const RiverNetwork& net, const geometry::GridIndex& g
   }
 }
 
+/// Distance from p to the nearest node (grid of nodes).
+double nearestNodeDistance(const RiverNetwork& net, const geometry::GridIndex& grid,
+                           geometry::Vec2 p) {
+  return nearestInGrid(
+      grid, p, [&](std::uint32_t i) { return geometry::distance(net.nodes[i].position, p); });
+}
+
 /// Distance from p to the nearest edge (grid of edges registered under their child's id).
 double nearestEdgeDistance(const RiverNetwork& net, const geometry::GridIndex& edges,
                            geometry::Vec2 p) {
-  double best = std::numeric_limits<double>::infinity();
-  for (double reach = edges.cellSize();; reach *= 2.0) {
-    geometry::Aabb box;
-    box.add(p);
-    edges.query(box.expanded(reach), [&](std::uint32_t i) {
-      const RiverNode& child = net.nodes[i];
-      const geometry::Vec2 a = net.node(child.parent).position;
-      const geometry::Vec2 q = geometry::closestPointOnSegment(p, a, child.position);
-      best = std::min(best, geometry::distance(q, p));
-      return true;
-    });
-    if (best <= reach || reach > 1e6)
-      return best;
-  }
+  return nearestInGrid(edges, p, [&](std::uint32_t i) {
+    const RiverNode& child = net.nodes[i];
+    const geometry::Vec2 a = net.node(child.parent).position;
+    return geometry::distance(geometry::closestPointOnSegment(p, a, child.position), p);
+  });
 }
 
 /// Degrees between the stem through node `id` (its downstream edge, continued upstream) and
