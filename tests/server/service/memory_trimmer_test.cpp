@@ -11,6 +11,15 @@
 namespace strahler::service {
 namespace {
 
+/// Under AddressSanitizer the heap is the sanitizer's allocator (freed blocks wait in its
+/// quarantine), which malloc_trim does not shrink: there the tests check when trims happen, not
+/// what they give back.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kGlibcHeap = false;
+#else
+constexpr bool kGlibcHeap = true;
+#endif
+
 /// VmRSS of this process in KB.
 long residentKb() {
   std::ifstream status("/proc/self/status");
@@ -38,7 +47,9 @@ TEST(MemoryTrimmer, GivesFreedHeapBackAfterActivityOnly) {
   for (int i = 0; i < 200 && trimmer.trims() == 0; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   ASSERT_EQ(trimmer.trims(), 1u);
-  EXPECT_LT(residentKb(), held - 32 * 1024) << "RSS " << held << " KB before the trim";
+  if (kGlibcHeap) {
+    EXPECT_LT(residentKb(), held - 32 * 1024) << "RSS " << held << " KB before the trim";
+  }
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   EXPECT_EQ(trimmer.trims(), 1u) << "trimmed again without new activity";
 }
