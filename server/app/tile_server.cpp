@@ -10,7 +10,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <sstream>
+#include <utility>
 
 namespace strahler::app {
 namespace {
@@ -106,7 +108,9 @@ struct TileServer::ServedWorld {
   std::string id;
   std::unique_ptr<TileService> tiles;
   json metadata;
-  std::string rivers;   // GeoJSON text
+  /// rivers.geojson, written on a thread of its own from the start: a large world's takes
+  /// seconds, which the server does not wait for. Declared after `tiles`, whose world it reads.
+  std::shared_future<std::shared_ptr<const std::string>> rivers;
   std::string cacheKey; // world's cache key: part of every ETag
   double bounds[4] = {0, 0, 0, 0};
   geometry::Vec2 center;
@@ -128,7 +132,6 @@ TileServer::TileServer(std::vector<std::pair<std::string, construction::WorldDat
     w->bounds[0] = box.min.x, w->bounds[1] = box.min.y, w->bounds[2] = box.max.x,
     w->bounds[3] = box.max.y;
     w->center = data.projectionCenter;
-    w->rivers = render::riversGeoJson(data, projection);
     w->metadata = {{"id", id},
                    {"name", data.name},
                    {"bounds", {w->bounds[0], w->bounds[1], w->bounds[2], w->bounds[3]}},
@@ -142,6 +145,11 @@ TileServer::TileServer(std::vector<std::pair<std::string, construction::WorldDat
                    {"generatorVersion", data.generatorVersion},
                    {"cacheKey", data.cacheKey}};
     w->tiles = std::make_unique<TileService>(std::move(data));
+    const construction::WorldData& served = w->tiles->world().data();
+    w->rivers =
+        std::async(std::launch::async, [&served, projection] {
+          return std::make_shared<const std::string>(render::riversGeoJson(served, projection));
+        }).share();
     const tiling::TileScheme& local = w->tiles->scheme(tiling::SchemeKind::kLocal);
     const geometry::Aabb root = local.localBounds({0, 0, 0});
     w->metadata["web"] = {{"minzoom", 0}, {"maxzoom", tiling::TileScheme::kMaxWebZoom}};
@@ -300,19 +308,62 @@ void TileServer::handle(const http::Request& request, std::function<void(http::R
       return done(jsonResponse(w->metadata, "world"));
     if (s.size() == 3 && s[2] == "tilejson.json")
       return done(tileJson(*w, request));
-    if (s.size() == 3 && s[2] == "rivers.geojson") {
-      http::Response r;
-      r.headers = {{"Content-Type", "application/geo+json"},
-                   {"Cache-Control", "public, max-age=3600"}};
-      r.body = w->rivers;
-      r.route = "rivers";
-      return done(std::move(r));
-    }
+    if (s.size() == 3 && s[2] == "rivers.geojson")
+      return rivers(*w, std::move(done));
     if (s.size() == 6 && (s[2] == "tiles" || s[2] == "local"))
       return tile(*w, s, parsed.value().query, request, std::move(done));
     return done(http::errorResponse(404, "no such resource under /worlds/" + w->id));
   }
   done(staticFile(s));
+}
+
+namespace {
+
+http::Response riversResponse(std::shared_ptr<const std::string> geojson) {
+  http::Response r;
+  r.headers = {{"Content-Type", "application/geo+json"}, {"Cache-Control", "public, max-age=3600"}};
+  r.sharedBody = std::move(geojson);
+  r.route = "rivers";
+  return r;
+}
+
+/// A request for rivers.geojson waiting on a worker. Whatever becomes of the task (run,
+/// refused, or dropped unrun at shutdown) the client gets one answer: the GeoJSON or a 503.
+class RiversWaiter {
+public:
+  RiversWaiter(std::shared_future<std::shared_ptr<const std::string>> rivers,
+               std::function<void(http::Response)> done)
+      : rivers_(std::move(rivers)), done_(std::move(done)) {}
+  RiversWaiter(const RiversWaiter&) = delete;
+  RiversWaiter& operator=(const RiversWaiter&) = delete;
+  ~RiversWaiter() {
+    if (!done_)
+      return;
+    http::Response r = http::errorResponse(503, "the rivers are still being written");
+    r.headers.emplace_back("Retry-After", "1");
+    r.route = "rivers";
+    std::exchange(done_, nullptr)(std::move(r));
+  }
+
+  /// Waits for the GeoJSON and sends it.
+  void answer() {
+    std::shared_ptr<const std::string> geojson = rivers_.get(); // throws: the destructor's 503
+    std::exchange(done_, nullptr)(riversResponse(std::move(geojson)));
+  }
+
+private:
+  std::shared_future<std::shared_ptr<const std::string>> rivers_;
+  std::function<void(http::Response)> done_;
+};
+
+} // namespace
+
+void TileServer::rivers(const ServedWorld& world, std::function<void(http::Response)> done) {
+  if (world.rivers.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
+    return done(riversResponse(world.rivers.get()));
+  // Still being written: wait on a worker, not on this I/O thread.
+  auto waiter = std::make_shared<RiversWaiter>(world.rivers, std::move(done));
+  pool_.submit([waiter] { waiter->answer(); }); // refused: the waiter answers 503
 }
 
 http::Response TileServer::staticFile(const std::vector<std::string>& segments) const {

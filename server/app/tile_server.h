@@ -35,7 +35,8 @@ struct TileServerOptions {
 /// The endpoints of DESIGN.md's server contract over a set of worlds: /, /worlds,
 /// /worlds/{id}, tilejson.json, tiles (Web Mercator and local), rivers.geojson, /health and
 /// /metrics. Tiles are computed on a bounded worker pool through a single-flight LRU cache;
-/// everything else is answered on the calling (I/O) thread. Thread-safe.
+/// everything else is answered on the calling (I/O) thread (rivers.geojson on a worker while
+/// it is still being written). Thread-safe.
 class TileServer {
 public:
   /// A server over `worlds` (id, data); ids must be unique URL segments.
@@ -68,6 +69,8 @@ private:
   http::Response staticFile(const std::vector<std::string>& segments) const;
   http::Response worldList(const http::Request& request) const;
   http::Response tileJson(const ServedWorld& world, const http::Request& request) const;
+  /// rivers.geojson of `world`; a worker waits for it while it is still being written.
+  void rivers(const ServedWorld& world, std::function<void(http::Response)> done);
   void tile(const ServedWorld& world, const std::vector<std::string>& segments,
             const std::map<std::string, std::string>& query, const http::Request& request,
             std::function<void(http::Response)> done);

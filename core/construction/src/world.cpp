@@ -77,14 +77,26 @@ World::World(WorldData data)
       riverGrid_(worldBounds(data_), kGridCell), noise_(data_.params.seed ^ kNoiseStream),
       gullySeed_(static_cast<std::uint32_t>(base::mixHash(data_.params.seed, kGullyStream))) {
   hot_.reserve(data_.terrain.size());
-  for (std::uint32_t i = 0; i < data_.terrain.size(); ++i) {
-    const primitives::TerrainPrimitive& t = data_.terrain[i];
+  for (const primitives::TerrainPrimitive& t : data_.terrain) {
     const double radius2 = t.radius * t.radius;
     hot_.push_back({t.center, radius2, radius2 > 0.0 ? 1.0 / radius2 : 0.0, t.elevation, t.slope,
                     std::max(t.amplitude, 0.0), std::clamp(t.roughness, 0.0, kMaxRoughness)});
-    terrainGrid_.insert(geometry::Aabb{t.center, t.center}.expanded(t.radius), i);
     terrainReach_ = std::max(terrainReach_, withRoundingMargin(t.radius));
   }
+  terrainGrid_.insertAll(static_cast<std::uint32_t>(data_.terrain.size()), [&](std::uint32_t i) {
+    const primitives::TerrainPrimitive& t = data_.terrain[i];
+    return geometry::Aabb{t.center, t.center}.expanded(t.radius);
+  });
+  std::size_t segments = 0, runs = 0;
+  for (const primitives::RiverPrimitive& river : data_.rivers) {
+    const std::size_t n = river.curve.size() > 0 ? river.curve.size() - 1 : 0;
+    segments += n;
+    runs += (n + detail::kChunk - 1) / detail::kChunk;
+  }
+  hotRivers_.reserve(data_.rivers.size());
+  hotSegments_.reserve(segments);
+  water_.reserve(2 * segments);
+  chunkBoxes_.reserve(runs);
   for (std::uint32_t i = 0; i < data_.rivers.size(); ++i) {
     const primitives::RiverPrimitive& river = data_.rivers[i];
     const std::vector<primitives::CurvePoint>& curve = river.curve;
@@ -117,8 +129,9 @@ World::World(WorldData data)
       water_.push_back(curve[k + 1].elevation - curve[k].elevation);
     }
     hot.segmentCount = static_cast<std::uint32_t>(hotSegments_.size()) - hot.segmentBegin;
-    riverGrid_.insert(hot.support, i);
   }
+  riverGrid_.insertAll(static_cast<std::uint32_t>(hotRivers_.size()),
+                       [&](std::uint32_t i) { return hotRivers_[i].support; });
   riverCells_.resize(riverGrid_.cellCount());
   for (std::size_t c = 0; c < riverGrid_.cellCount(); ++c) {
     // Points land in a cell by a rounded division: a little slack around its box.

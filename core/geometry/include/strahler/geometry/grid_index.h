@@ -39,6 +39,18 @@ public:
     forEachCell(box, [&](std::vector<std::uint32_t>& cell) { cell.push_back(id); });
   }
 
+  /// Registers ids 0 .. count−1 by their boxes boxOf(id), as many insert() calls but each
+  /// cell's list allocated once at its final size (a counting pass first).
+  template <class BoxOf> void insertAll(std::uint32_t count, BoxOf&& boxOf) {
+    std::vector<std::uint32_t> sizes(cells_.size(), 0);
+    for (std::uint32_t id = 0; id < count; ++id)
+      forEachCellIndex(boxOf(id), [&](std::size_t c) { ++sizes[c]; });
+    for (std::size_t c = 0; c < cells_.size(); ++c)
+      cells_[c].reserve(cells_[c].size() + sizes[c]);
+    for (std::uint32_t id = 0; id < count; ++id)
+      insert(boxOf(id), id);
+  }
+
   /// The ids registered in the cell that holds p (clamped to the grid), in insertion order.
   const std::vector<std::uint32_t>& cellAt(Vec2 p) const noexcept {
     return cells_[index(cellX(p.x), cellY(p.y))];
@@ -86,12 +98,15 @@ private:
     x1 = cellX(box.max.x);
     y1 = cellY(box.max.y);
   }
-  template <class Fn> void forEachCell(const Aabb& box, Fn&& fn) {
+  template <class Fn> void forEachCellIndex(const Aabb& box, Fn&& fn) const {
     int x0, y0, x1, y1;
     cellRange(box, x0, y0, x1, y1);
     for (int y = y0; y <= y1; ++y)
       for (int x = x0; x <= x1; ++x)
-        fn(cells_[index(x, y)]);
+        fn(index(x, y));
+  }
+  template <class Fn> void forEachCell(const Aabb& box, Fn&& fn) {
+    forEachCellIndex(box, [&](std::size_t c) { fn(cells_[c]); });
   }
 
   Vec2 origin_{};
