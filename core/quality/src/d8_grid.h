@@ -22,7 +22,8 @@ inline constexpr double kDiagonal = 1.4142135623730951;
 
 /// Whether cell i of `raster` is land.
 inline bool isLand(const HeightRaster& raster, std::size_t i) noexcept {
-  return raster.cellClass[i] == std::uint8_t(CellClass::kLand);
+  return raster.cellClass[i] == std::uint8_t(CellClass::kLand) ||
+         raster.cellClass[i] == std::uint8_t(CellClass::kShore);
 }
 
 /// Calls fn(neighbour, k) for each of the 8 neighbours of c inside a width × height raster
@@ -40,6 +41,8 @@ template <class Fn> void forEachNeighbour(int width, int height, Cell c, Fn&& fn
 inline bool touchesSink(const HeightRaster& raster, Cell c) {
   const int x = int(c % Cell(raster.width)), y = int(c / Cell(raster.width));
   if (x == 0 || y == 0 || x == raster.width - 1 || y == raster.height - 1)
+    return true;
+  if (raster.cellClass[c] == std::uint8_t(CellClass::kShore))
     return true;
   bool sink = false;
   forEachNeighbour(raster.width, raster.height, c,

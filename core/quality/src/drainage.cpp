@@ -178,9 +178,15 @@ void resolveDescent(const Grid& grid, Flood& flood) {
   }
 }
 
-/// Size in cells of the largest 8-connected set of undrained cells (marks them kCounted).
-std::size_t largestUndrainedComponent(const Grid& grid, std::vector<State>& state) {
-  std::size_t largest = 0;
+/// The largest 8-connected set of undrained cells: its size in cells and its lowest cell (where
+/// its water ends); marks every undrained cell kCounted.
+struct UndrainedArea {
+  std::size_t cells = 0;
+  Cell lowest = kNoCell;
+};
+UndrainedArea largestUndrainedComponent(const Grid& grid, const std::vector<float>& heights,
+                                        std::vector<State>& state) {
+  UndrainedArea largest;
   std::vector<Cell> component;
   for (Cell start = 0; start < Cell(grid.size()); ++start) {
     if (state[start] != State::kUndrained)
@@ -195,7 +201,11 @@ std::size_t largestUndrainedComponent(const Grid& grid, std::vector<State>& stat
         }
       });
     }
-    largest = std::max(largest, component.size());
+    if (component.size() > largest.cells) {
+      largest.cells = component.size();
+      largest.lowest = *std::min_element(component.begin(), component.end(),
+                                         [&](Cell a, Cell b) { return heights[a] < heights[b]; });
+    }
   }
   return largest;
 }
@@ -232,8 +242,13 @@ DrainageReport analyseDrainage(const HeightRaster& raster, double fillTolerance,
   if (cells != nullptr)
     *cells = toCellDrainage(grid, flood.state);
   const double cellAreaKm2 = raster.cellSize * raster.cellSize * 1e-6;
-  report.largestUndrainedAreaKm2 =
-      double(largestUndrainedComponent(grid, flood.state)) * cellAreaKm2;
+  const UndrainedArea largest = largestUndrainedComponent(grid, raster.heights, flood.state);
+  report.largestUndrainedAreaKm2 = double(largest.cells) * cellAreaKm2;
+  if (largest.lowest != kNoCell)
+    report.largestUndrainedAt =
+        raster.origin + geometry::Vec2{double(largest.lowest % Cell(raster.width)),
+                                       double(largest.lowest / Cell(raster.width))} *
+                            raster.cellSize;
   return report;
 }
 

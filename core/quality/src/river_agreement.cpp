@@ -1,5 +1,7 @@
 #include "strahler/quality/river_agreement.h"
 
+#include "d8_grid.h"
+
 #include "strahler/geometry/distance_transform.h"
 #include "strahler/quality/world_raster.h"
 
@@ -65,7 +67,7 @@ void measureCoverage(const std::vector<float>& distance, const HeightRaster& r,
   std::vector<float> land;
   std::size_t farthest = 0;
   for (std::size_t c = 0; c < distance.size(); ++c)
-    if (r.cellClass[c] == static_cast<std::uint8_t>(CellClass::kLand)) {
+    if (d8::isLand(r, c)) {
       land.push_back(distance[c]);
       farthest = distance[c] > distance[farthest] ? c : farthest;
     }

@@ -15,9 +15,11 @@ geometry::Aabb rasterBounds(const construction::World& world) {
 
 using geometry::Vec2;
 
-CellClass classify(const construction::World& world, Vec2 p) {
+/// The class of the cell of side `cellSize` centred on p.
+CellClass classify(const construction::World& world, Vec2 p, double cellSize) {
   if (world.land().contains(p))
-    return CellClass::kLand;
+    return world.land().distanceToBoundary(p, 0.5 * cellSize) < 0.5 * cellSize ? CellClass::kShore
+                                                                               : CellClass::kLand;
   for (const geometry::Polygon& poly : world.data().land)
     if (geometry::contains(poly.outer, p))
       return CellClass::kLake;
@@ -35,8 +37,8 @@ void sampleRows(const construction::World& world, HeightRaster& r, int first, in
       const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(r.width) +
                             static_cast<std::size_t>(x);
       r.heights[i] = static_cast<float>(heights[static_cast<std::size_t>(x)]);
-      r.cellClass[i] =
-          static_cast<std::uint8_t>(classify(world, points[static_cast<std::size_t>(x)]));
+      r.cellClass[i] = static_cast<std::uint8_t>(
+          classify(world, points[static_cast<std::size_t>(x)], r.cellSize));
     }
   }
 }

@@ -261,6 +261,27 @@ TEST(World, AlmostAllLandDrainsToTheSeaOrALake) {
   EXPECT_GE(report.drainingFraction, 0.99) << report.pits << " pits";
 }
 
+TEST(World, RasterMarksTheLandTheShorelineCrossesAsShore) {
+  const World& world = defaultWorld();
+  const quality::HeightRaster raster =
+      quality::rasterizeWorld(world, 120.0, 2, quality::RiverBurning::kNone);
+  std::size_t shore = 0;
+  for (std::size_t i = 0; i < raster.cellClass.size(); ++i) {
+    const int x = int(i % std::size_t(raster.width)), y = int(i / std::size_t(raster.width));
+    const geometry::Vec2 p = raster.origin + geometry::Vec2{double(x), double(y)} * 120.0;
+    const double toShore = world.land().distanceToBoundary(p, 1000.0);
+    const auto cls = quality::CellClass(raster.cellClass[i]);
+    if (cls == quality::CellClass::kShore) {
+      ++shore;
+      EXPECT_TRUE(world.land().contains(p));
+      EXPECT_LT(toShore, 60.0);
+    } else if (cls == quality::CellClass::kLand) {
+      EXPECT_GE(toShore, 60.0);
+    }
+  }
+  EXPECT_GT(shore, 100u);
+}
+
 TEST(World, CoastSitsAtSeaLevelAndTheSeaHasDepth) {
   const World& world = defaultWorld();
   const geometry::Ring& coast = world.data().land[0].outer;

@@ -92,8 +92,10 @@ TEST(Drainage, DeepPitAndItsCatchmentDoNotDrain) {
   const std::size_t undrained = map.report.landCells - map.report.drainingCells;
   EXPECT_GE(undrained, 2u);
   EXPECT_LT(map.report.drainingFraction, 1.0);
-  // The catchment is one connected patch.
+  // The catchment is one connected patch, whose water ends in the pit.
   EXPECT_NEAR(map.report.largestUndrainedAreaKm2, double(undrained) * kCellAreaKm2, 1e-12);
+  EXPECT_DOUBLE_EQ(map.report.largestUndrainedAt.x, raster.origin.x + 25 * raster.cellSize);
+  EXPECT_DOUBLE_EQ(map.report.largestUndrainedAt.y, raster.origin.y + 20 * raster.cellSize);
 }
 
 TEST(Drainage, DeepPitDrainsWithALargerTolerance) {
@@ -161,6 +163,17 @@ TEST(Drainage, WalledFlatWithoutOutletIsAPit) {
   const std::size_t walls = 2 * 30 + 2 * 18;
   EXPECT_EQ(map.report.drainingCells, walls);
   EXPECT_NEAR(map.report.largestUndrainedAreaKm2, 28.0 * 18.0 * kCellAreaKm2, 1e-12);
+}
+
+TEST(Drainage, ShoreCellIsAnOutletOfAWalledBasin) {
+  // The shoreline of a lake (or fjord) narrower than a cell crosses one cell of the walled
+  // plateau: that cell lets the plateau's water out.
+  HeightRaster raster = walledPlateau(false);
+  setClass(raster, 15, 10, CellClass::kShore);
+  const DrainageMap map = mapDrainage(raster);
+  EXPECT_EQ(map.report.landCells, 30u * 20u) << "a shore cell is land";
+  EXPECT_EQ(map.report.drainingCells, map.report.landCells);
+  EXPECT_EQ(map.report.pits, 0u);
 }
 
 TEST(Drainage, FlatDrainsTowardItsOutletNotIntoANeighbouringPit) {

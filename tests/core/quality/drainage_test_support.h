@@ -32,11 +32,11 @@ inline void setClass(HeightRaster& raster, int x, int y, CellClass cls) {
   raster.cellClass[at(raster, x, y)] = std::uint8_t(cls);
 }
 
-/// Number of land cells.
+/// Number of land cells (shore cells included).
 inline std::size_t countLand(const HeightRaster& raster) {
   std::size_t land = 0;
   for (std::uint8_t c : raster.cellClass)
-    land += c == std::uint8_t(CellClass::kLand) ? 1 : 0;
+    land += c == std::uint8_t(CellClass::kLand) || c == std::uint8_t(CellClass::kShore) ? 1 : 0;
   return land;
 }
 

@@ -25,7 +25,8 @@ struct ReliefReport {
 /// The checks as one JSON object, keys always present and in this order (NaN and
 /// infinities become null; lengths and heights in metres, areas in km²):
 ///   {"drainage": {"landCells", "drainingCells", "drainingFraction", "drainingFractionUnburnt",
-///                 "pits", "largestUndrainedAreaKm2", "fillToleranceM"},
+///                 "pits", "largestUndrainedAreaKm2", "largestUndrainedAt" (local x, y of
+///                 its lowest cell, when there is one), "fillToleranceM"},
 ///    "horton": {"streamCount": {"1": N_1, "2": N_2, ...},
 ///               "meanStreamLengthM": {"1": L_1, ...}, "bifurcationRatio", "lengthRatio"},
 ///    "rivers": {"samples", "violations", "worstRiseM", "worstAt": [x, y]},

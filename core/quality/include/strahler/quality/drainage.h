@@ -13,6 +13,10 @@ enum class CellClass : std::uint8_t {
   kLand = 0, ///< Ground: the cells whose drainage is checked.
   kSea = 1,  ///< Sea: a sink.
   kLake = 2, ///< Lake surface: a sink, like the sea.
+  /// Ground the shoreline crosses (within half a cell of it): land for every figure, and an
+  /// outlet, since its water reaches the sea or a lake inside the cell (a fjord or channel
+  /// narrower than a cell has no water cell of its own).
+  kShore = 3,
 };
 
 /// A regular grid of terrain heights. Invariant: heights.size() == cellClass.size() ==
@@ -33,6 +37,8 @@ struct DrainageReport {
   double drainingFraction = 1.0;        ///< drainingCells / landCells; 1 when there is no land.
   std::size_t pits = 0;                 ///< Depressions deeper than fillTolerance.
   double largestUndrainedAreaKm2 = 0.0; ///< Largest 8-connected set of undrained cells, km².
+  /// Lowest cell of that set (where its water ends), local metres; (0, 0) when there is none.
+  geometry::Vec2 largestUndrainedAt;
   double fillTolerance = 0.0;           ///< The tolerance used, metres.
 };
 

@@ -11,7 +11,8 @@ namespace strahler::quality {
 enum class RiverBurning { kBurn, kNone };
 
 /// Samples a world's heights on a raster of `cellSize` metres over its land (plus a 1 km
-/// margin), classifying cells as land, sea or lake, on `threads` threads (same result for
+/// margin), classifying cells as land, shore (land within half a cell of the shoreline), sea or
+/// lake, on `threads` threads (same result for
 /// any count). With kBurn (the drainage check's raster) rivers are then burnt in by
 /// burnRivers; relief figures take kNone, the terrain as it is.
 HeightRaster rasterizeWorld(const construction::World& world, double cellSize, int threads = 1,
