@@ -24,8 +24,8 @@ Json drainageJson(const DrainageReport& report, double drainingFractionUnburnt) 
   json["pits"] = report.pits;
   json["largestUndrainedAreaKm2"] = number(report.largestUndrainedAreaKm2);
   if (report.largestUndrainedAreaKm2 > 0.0)
-    json["largestUndrainedAt"] = Json::array(
-        {number(report.largestUndrainedAt.x), number(report.largestUndrainedAt.y)});
+    json["largestUndrainedAt"] =
+        Json::array({number(report.largestUndrainedAt.x), number(report.largestUndrainedAt.y)});
   json["fillToleranceM"] = number(report.fillTolerance);
   return json;
 }

@@ -65,11 +65,12 @@ double channelsNearRivers(const std::vector<float>& distance, const FlowField& f
 void measureCoverage(const std::vector<float>& distance, const HeightRaster& r,
                      NetworkReliefFigures& figures) {
   std::vector<float> land;
-  std::size_t farthest = 0;
+  std::size_t farthest = distance.size(); // none yet
   for (std::size_t c = 0; c < distance.size(); ++c)
     if (d8::isLand(r, c)) {
       land.push_back(distance[c]);
-      farthest = distance[c] > distance[farthest] ? c : farthest;
+      if (farthest == distance.size() || distance[c] > distance[farthest])
+        farthest = c;
     }
   if (land.empty())
     return;

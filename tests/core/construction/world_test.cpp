@@ -7,6 +7,8 @@
 #include "strahler/geometry/distance.h"
 #include "strahler/primitives/river_primitives.h"
 #include "strahler/quality/drainage.h"
+#include "strahler/quality/flow_field.h"
+#include "strahler/quality/river_agreement.h"
 #include "strahler/quality/river_profile.h"
 #include "strahler/quality/world_raster.h"
 
@@ -280,6 +282,23 @@ TEST(World, RasterMarksTheLandTheShorelineCrossesAsShore) {
     }
   }
   EXPECT_GT(shore, 100u);
+}
+
+TEST(World, FarthestLandFromTheRiversIsLandAtTheGreatestDistance) {
+  const World& world = defaultWorld();
+  constexpr double kCell = 120.0;
+  const quality::HeightRaster raster =
+      quality::rasterizeWorld(world, kCell, 2, quality::RiverBurning::kNone);
+  const quality::NetworkReliefFigures figures =
+      quality::compareWithRivers(world, raster, quality::computeFlowField(raster));
+  const geometry::Vec2 far = figures.farthestFromRivers;
+  EXPECT_TRUE(world.land().contains(far)) << far.x << ", " << far.y;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const std::vector<geometry::Vec2>& line : quality::riverCentrelines(world))
+    for (std::size_t k = 0; k + 1 < line.size(); ++k)
+      nearest = std::min(nearest, geometry::pointSegmentDistance(far, line[k], line[k + 1]));
+  // Distances run between cell centres: within a cell diagonal of the exact one.
+  EXPECT_NEAR(nearest, figures.riverDistanceMaxM, kCell * std::sqrt(2.0));
 }
 
 TEST(World, CoastSitsAtSeaLevelAndTheSeaHasDepth) {

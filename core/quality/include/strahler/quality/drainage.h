@@ -39,7 +39,7 @@ struct DrainageReport {
   double largestUndrainedAreaKm2 = 0.0; ///< Largest 8-connected set of undrained cells, km².
   /// Lowest cell of that set (where its water ends), local metres; (0, 0) when there is none.
   geometry::Vec2 largestUndrainedAt;
-  double fillTolerance = 0.0;           ///< The tolerance used, metres.
+  double fillTolerance = 0.0; ///< The tolerance used, metres.
 };
 
 /// Outcome for one cell.
