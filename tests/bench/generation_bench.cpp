@@ -21,16 +21,7 @@ namespace {
 input::WorldSpec worldFor(std::int64_t which) {
   if (which == 0)
     return testing::defaultIslandSpec();
-  input::WorldSpec spec = testing::mallorcaSpec();
-  const double scale = static_cast<double>(std::int64_t{1} << (which - 1));
-  for (geometry::Polygon& p : spec.land) {
-    for (geometry::Vec2& v : p.outer)
-      v = v * scale;
-    for (geometry::Ring& h : p.holes)
-      for (geometry::Vec2& v : h)
-        v = v * scale;
-  }
-  return spec;
+  return testing::scaledMallorcaSpec(static_cast<double>(std::int64_t{1} << (which - 1)));
 }
 
 void setLabel(benchmark::State& state, const input::WorldSpec& spec) {

@@ -35,6 +35,13 @@ const Fixture& fixture() {
   return f;
 }
 
+/// Mallorca scaled ×4 in each direction: 58,000 km², 16 times the area (and the primitives).
+const Fixture& largeFixture() {
+  static const Fixture f(
+      construction::generateWorldData(testing::scaledMallorcaSpec(4.0), "bench-x16").value());
+  return f;
+}
+
 /// A web tile over land at zoom z (Mallorca's centre).
 tiling::TileId tileAt(int z) {
   const geometry::Vec2 c = fixture().world.data().projectionCenter;
@@ -162,6 +169,19 @@ void BM_TileFixedCount(benchmark::State& state) {
       benchmark::DoNotOptimize(f.evaluator.evaluate(grid));
 }
 
+/// Tiles of a large world against the same tiles of Mallorca, in one run (issue 16: the block
+/// index keeps a tile's cost local). range(0) zoom, range(1) 1 for Mallorca ×16, 0 for Mallorca;
+/// the tile is the one holding the local frame's centre, land in both.
+void BM_TileWorldSize(benchmark::State& state) {
+  const Fixture& f = state.range(1) == 1 ? largeFixture() : fixture();
+  const geometry::Vec2 c = f.world.data().projectionCenter;
+  const tiling::TileId tile = testing::webTileAt(c.x, c.y, static_cast<int>(state.range(0)));
+  const tiling::SampleGrid grid = f.web.rasterGrid(tile, 256);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(f.evaluator.evaluate(grid));
+  state.SetLabel(std::to_string(f.world.data().terrain.size()) + " terrain primitives");
+}
+
 // Zoom 0 is the whole Earth (Mallorca a few pixels), 9 holds all of Mallorca, 13 is a
 // middle zoom, 18 the finest; restricted evaluation also at every zoom from 8 to 13, where the
 // cost peaks.
@@ -175,6 +195,10 @@ BENCHMARK(BM_TileRestricted)
 BENCHMARK(BM_TileRestrictedOn)
     ->ArgsProduct({{0, 9, 13, 18}, {0, 1}})
     ->ArgNames({"zoom", "avx2"})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TileWorldSize)
+    ->ArgsProduct({{11, 12, 13, 14}, {0, 1}})
+    ->ArgNames({"zoom", "x16"})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TileWholeWorld)->Arg(0)->Arg(9)->Arg(13)->Arg(18)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TileAllPrimitives)->Arg(13)->Unit(benchmark::kMillisecond);

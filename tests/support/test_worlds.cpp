@@ -35,6 +35,18 @@ input::WorldSpec mallorcaSpec(std::uint64_t seed) {
   return specFrom("mallorca", readTestData("mallorca.geojson"), seed);
 }
 
+input::WorldSpec scaledMallorcaSpec(double scale, std::uint64_t seed) {
+  input::WorldSpec spec = mallorcaSpec(seed);
+  for (geometry::Polygon& p : spec.land) {
+    for (geometry::Vec2& v : p.outer)
+      v = v * scale;
+    for (geometry::Ring& h : p.holes)
+      for (geometry::Vec2& v : h)
+        v = v * scale;
+  }
+  return spec;
+}
+
 input::WorldSpec corsicaSpec(std::uint64_t seed) {
   return specFrom("corsica", readTestData("corsica.geojson"), seed);
 }

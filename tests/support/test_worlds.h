@@ -10,6 +10,9 @@ namespace strahler::testing {
 input::WorldSpec defaultIslandSpec(std::uint64_t seed = 1);
 /// Mallorca (Natural Earth 1:10m, ~3,640 km²) with default params.
 input::WorldSpec mallorcaSpec(std::uint64_t seed = 1);
+/// Mallorca scaled by `scale` in each direction about its local frame's centre (scale² times
+/// the area: a large island with Mallorca's shape), default params.
+input::WorldSpec scaledMallorcaSpec(double scale, std::uint64_t seed = 1);
 /// Corsica (Natural Earth 1:10m, ~8,700 km²) with default params.
 input::WorldSpec corsicaSpec(std::uint64_t seed = 1);
 /// Contents of a file in tests/data.
