@@ -1,5 +1,6 @@
 #include "tile_server.h"
 
+#include "content_encoding.h"
 #include "route_parser.h"
 #include "tile_route.h"
 
@@ -108,9 +109,10 @@ struct TileServer::ServedWorld {
   std::string id;
   std::unique_ptr<TileService> tiles;
   json metadata;
-  /// rivers.geojson, written on a thread of its own from the start: a large world's takes
-  /// seconds, which the server does not wait for. Declared after `tiles`, whose world it reads.
-  std::shared_future<std::shared_ptr<const std::string>> rivers;
+  /// rivers.geojson, written (and gzipped) on a thread of its own from the start: a large
+  /// world's takes seconds, which the server does not wait for. Declared after `tiles`, whose
+  /// world it reads.
+  std::shared_future<RiversText> rivers;
   std::string cacheKey; // world's cache key: part of every ETag
   double bounds[4] = {0, 0, 0, 0};
   geometry::Vec2 center;
@@ -146,10 +148,11 @@ TileServer::TileServer(std::vector<std::pair<std::string, construction::WorldDat
                    {"cacheKey", data.cacheKey}};
     w->tiles = std::make_unique<TileService>(std::move(data));
     const construction::WorldData& served = w->tiles->world().data();
-    w->rivers =
-        std::async(std::launch::async, [&served, projection] {
-          return std::make_shared<const std::string>(render::riversGeoJson(served, projection));
-        }).share();
+    w->rivers = std::async(std::launch::async, [&served, projection] {
+                  auto plain = std::make_shared<const std::string>(
+                      render::riversGeoJson(served, projection));
+                  return RiversText{plain, std::make_shared<const std::string>(gzipped(*plain))};
+                }).share();
     const tiling::TileScheme& local = w->tiles->scheme(tiling::SchemeKind::kLocal);
     const geometry::Aabb root = local.localBounds({0, 0, 0});
     w->metadata["web"] = {{"minzoom", 0}, {"maxzoom", tiling::TileScheme::kMaxWebZoom}};
@@ -309,7 +312,7 @@ void TileServer::handle(const http::Request& request, std::function<void(http::R
     if (s.size() == 3 && s[2] == "tilejson.json")
       return done(tileJson(*w, request));
     if (s.size() == 3 && s[2] == "rivers.geojson")
-      return rivers(*w, std::move(done));
+      return rivers(*w, request, std::move(done));
     if (s.size() == 6 && (s[2] == "tiles" || s[2] == "local"))
       return tile(*w, s, parsed.value().query, request, std::move(done));
     return done(http::errorResponse(404, "no such resource under /worlds/" + w->id));
@@ -319,10 +322,14 @@ void TileServer::handle(const http::Request& request, std::function<void(http::R
 
 namespace {
 
-http::Response riversResponse(std::shared_ptr<const std::string> geojson) {
+http::Response riversResponse(const RiversText& rivers, bool gzip) {
   http::Response r;
-  r.headers = {{"Content-Type", "application/geo+json"}, {"Cache-Control", "public, max-age=3600"}};
-  r.sharedBody = std::move(geojson);
+  r.headers = {{"Content-Type", "application/geo+json"},
+               {"Cache-Control", "public, max-age=3600"},
+               {"Vary", "Accept-Encoding"}};
+  if (gzip)
+    r.headers.emplace_back("Content-Encoding", "gzip");
+  r.sharedBody = gzip ? rivers.gzip : rivers.plain;
   r.route = "rivers";
   return r;
 }
@@ -331,9 +338,9 @@ http::Response riversResponse(std::shared_ptr<const std::string> geojson) {
 /// refused, or dropped unrun at shutdown) the client gets one answer: the GeoJSON or a 503.
 class RiversWaiter {
 public:
-  RiversWaiter(std::shared_future<std::shared_ptr<const std::string>> rivers,
+  RiversWaiter(std::shared_future<RiversText> rivers, bool gzip,
                std::function<void(http::Response)> done)
-      : rivers_(std::move(rivers)), done_(std::move(done)) {}
+      : rivers_(std::move(rivers)), gzip_(gzip), done_(std::move(done)) {}
   RiversWaiter(const RiversWaiter&) = delete;
   RiversWaiter& operator=(const RiversWaiter&) = delete;
   ~RiversWaiter() {
@@ -347,22 +354,25 @@ public:
 
   /// Waits for the GeoJSON and sends it.
   void answer() {
-    std::shared_ptr<const std::string> geojson = rivers_.get(); // throws: the destructor's 503
-    std::exchange(done_, nullptr)(riversResponse(std::move(geojson)));
+    http::Response r = riversResponse(rivers_.get(), gzip_); // throws: the destructor's 503
+    std::exchange(done_, nullptr)(std::move(r));
   }
 
 private:
-  std::shared_future<std::shared_ptr<const std::string>> rivers_;
+  std::shared_future<RiversText> rivers_;
+  bool gzip_ = false;
   std::function<void(http::Response)> done_;
 };
 
 } // namespace
 
-void TileServer::rivers(const ServedWorld& world, std::function<void(http::Response)> done) {
+void TileServer::rivers(const ServedWorld& world, const http::Request& request,
+                        std::function<void(http::Response)> done) {
+  const bool gzip = acceptsGzip(request.header("accept-encoding"));
   if (world.rivers.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
-    return done(riversResponse(world.rivers.get()));
+    return done(riversResponse(world.rivers.get(), gzip));
   // Still being written: wait on a worker, not on this I/O thread.
-  auto waiter = std::make_shared<RiversWaiter>(world.rivers, std::move(done));
+  auto waiter = std::make_shared<RiversWaiter>(world.rivers, gzip, std::move(done));
   pool_.submit([waiter] { waiter->answer(); }); // refused: the waiter answers 503
 }
 

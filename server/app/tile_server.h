@@ -18,6 +18,12 @@
 
 namespace strahler::app {
 
+/// A world's rivers.geojson, as text and gzipped.
+struct RiversText {
+  std::shared_ptr<const std::string> plain; ///< The GeoJSON.
+  std::shared_ptr<const std::string> gzip;  ///< The same, one gzip member.
+};
+
 /// Settings of the tile server's work side.
 struct TileServerOptions {
   int workers = 2;                     ///< Threads computing tiles.
@@ -69,8 +75,10 @@ private:
   http::Response staticFile(const std::vector<std::string>& segments) const;
   http::Response worldList(const http::Request& request) const;
   http::Response tileJson(const ServedWorld& world, const http::Request& request) const;
-  /// rivers.geojson of `world`; a worker waits for it while it is still being written.
-  void rivers(const ServedWorld& world, std::function<void(http::Response)> done);
+  /// rivers.geojson of `world`, gzipped if `request` accepts it; a worker waits for it while
+  /// it is still being written.
+  void rivers(const ServedWorld& world, const http::Request& request,
+              std::function<void(http::Response)> done);
   void tile(const ServedWorld& world, const std::vector<std::string>& segments,
             const std::map<std::string, std::string>& query, const http::Request& request,
             std::function<void(http::Response)> done);

@@ -91,7 +91,15 @@ TEST(TileServer, EveryEndpointAnswers) {
   EXPECT_GT(meta["areaKm2"].get<double>(), 900.0);
   auto rivers = request(s.port(), "/worlds/island/rivers.geojson");
   EXPECT_EQ(rivers.headers["content-type"], "application/geo+json");
+  EXPECT_EQ(rivers.headers.count("content-encoding"), 0u) << "not asked for";
+  EXPECT_EQ(rivers.headers["vary"], "Accept-Encoding");
   EXPECT_EQ(nlohmann::json::parse(rivers.body)["type"], "FeatureCollection");
+  auto packed = request(s.port(), "/worlds/island/rivers.geojson", "GET",
+                        "Accept-Encoding: gzip, deflate\r\n");
+  EXPECT_EQ(packed.headers["content-encoding"], "gzip");
+  EXPECT_EQ(packed.headers["vary"], "Accept-Encoding");
+  EXPECT_LT(packed.body.size(), rivers.body.size() / 2);
+  EXPECT_EQ(packed.body.substr(0, 2), std::string("\x1f\x8b", 2));
   for (const char* path :
        {"/worlds/island/tiles/9/216/186.png",
         "/worlds/island/tiles/9/216/186.png?encoding=terrarium",

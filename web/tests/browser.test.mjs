@@ -70,6 +70,7 @@ describe('map viewer', () => {
     assert.ok(of(/\/worlds$/).length === 1, 'GET /worlds');
     assert.ok(of(/\/tilejson\.json$/).length >= 1, 'GET tilejson.json');
     assert.ok(of(/\/rivers\.geojson$/).length === 1, 'GET rivers.geojson');
+    assert.equal(of(/\/rivers\.geojson$/)[0].encoding, 'gzip', 'rivers.geojson comes gzipped');
     const tiles = of(/\/tiles\/\d+\/\d+\/\d+\.png$/);
     assert.ok(tiles.length >= 1, 'no heightmap tile was requested');
     for (const tile of tiles) assert.match(tile.type, /^image\/png/, tile.url);

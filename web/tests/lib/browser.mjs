@@ -30,6 +30,7 @@ export async function openPage(browser, url) {
   });
   page.on('response', (response) => record.responses.push({
     url: response.url(), status: response.status(), type: response.headers()['content-type'] ?? '',
+    encoding: response.headers()['content-encoding'] ?? '',
   }));
   await page.goto(url, { waitUntil: 'load', timeout: 30_000 });
   return { page, record };
