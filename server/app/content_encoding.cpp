@@ -68,8 +68,7 @@ bool acceptsGzip(std::string_view acceptEncoding) {
 std::string gzipped(std::string_view text) {
   z_stream stream{};
   // windowBits 15 + 16: a gzip header and trailer around the deflate stream.
-  const int init =
-      deflateInit2(&stream, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY);
+  const int init = deflateInit2(&stream, Z_BEST_SPEED, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY);
   STRAHLER_ASSERT(init == Z_OK, "zlib could not start a gzip stream");
   STRAHLER_ASSERT(text.size() <= std::numeric_limits<uInt>::max(),
                   "text too large for one zlib call");
