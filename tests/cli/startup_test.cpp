@@ -28,6 +28,14 @@ using namespace std::chrono_literals;
 
 constexpr const char* kModule = "strahler_image_oiio.so";
 
+// Sanitized builds link OpenImageIO at start (core/image/CMakeLists.txt: LeakSanitizer cannot
+// read the TLS of libraries that dlopen loads), so its absence is checked in the others only.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kOpenImageIoAtStart = true;
+#else
+constexpr bool kOpenImageIoAtStart = false;
+#endif
+
 fs::path scratchDir() {
   // One folder per process: CTest runs these tests in parallel processes.
   const fs::path dir = fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch" /
@@ -101,6 +109,8 @@ TEST(Startup, HelpInfoAndIntegerAndMeshTilesNeverLoadOpenImageIo) {
   // GMP. A bound, not the list, so that a Debian point release does not break the test; the
   // 264 of OpenImageIO's closure are far beyond it.
   constexpr std::size_t kMaxLibraries = 20;
+  if (kOpenImageIoAtStart)
+    GTEST_SKIP() << "this sanitized build links OpenImageIO at start";
   std::vector<std::string> commands = {"--help", "info " + world().string()};
   for (const char* format : {"png", "terrarium", "png16", "drc", "glb"})
     commands.push_back(tileArgs(format, scratchDir() / (std::string("t.") + format)));
@@ -142,7 +152,8 @@ TEST(Startup, ServeMapsOpenImageIoOnlyOnceAFloatTileIsAskedFor) {
     const auto tile = fetch(port, getRequest(target), 30s);
     ASSERT_TRUE(tile && tile->status == 200) << target;
   }
-  EXPECT_FALSE(mentionsOpenImageIo(mapsOf(serve.pid())));
+  if (!kOpenImageIoAtStart)
+    EXPECT_FALSE(mentionsOpenImageIo(mapsOf(serve.pid())));
   const auto exr = fetch(port, getRequest("/worlds/startup/local/2/1/2.exr?size=32"), 60s);
   ASSERT_TRUE(exr);
   EXPECT_EQ(exr->status, 200) << exr->body;
