@@ -41,6 +41,19 @@ std::string tileEtag(const std::string& worldKey, const std::string& tileKey) {
   return etag;
 }
 
+/// The status of a tile that could not be made: 404 for what does not exist, 501 for a format
+/// this installation cannot make (its OpenImageIO module is missing), 500 for the rest.
+int tileErrorStatus(base::ErrorCode code) {
+  switch (code) {
+  case base::ErrorCode::kNotFound:
+    return 404;
+  case base::ErrorCode::kUnsupported:
+    return 501;
+  default:
+    return 500;
+  }
+}
+
 /// Header fields of a tile's 200 response.
 std::vector<std::pair<std::string, std::string>> tileHeaders(const service::CachedTile& t) {
   return {{"Content-Type", t.mimeType},
@@ -425,9 +438,8 @@ void TileServer::tile(const ServedWorld& w, const std::vector<std::string>& s,
     auto rendered = service->render(req);
     trimmer_.noteActivity();
     if (!rendered)
-      return service::TileCache::Outcome{
-          nullptr, rendered.error().code == base::ErrorCode::kNotFound ? 404 : 500,
-          rendered.error().message};
+      return service::TileCache::Outcome{nullptr, tileErrorStatus(rendered.error().code),
+                                         rendered.error().message};
     metrics_.recordTile(rendered.value().evaluateMs, rendered.value().encodeMs);
     auto t = std::make_shared<service::CachedTile>();
     t->bytes = std::move(rendered.value().bytes);

@@ -41,6 +41,13 @@ TEST(ServeCommand, SigtermUnderLoadExitsWithinTheDrainWindow) {
   const std::uint16_t port = serve.readPort(&banner);
   ASSERT_NE(port, 0) << "no banner, got '" << banner << "'";
 
+  // One EXR tile first: the OpenImageIO module, loaded on first use (~0.5 s), is there before
+  // the load and the clock start.
+  const auto first = strahler::http::test::fetch(
+      port, strahler::http::test::getRequest("/worlds/default/tiles/15/13856/11935.exr?size=16"),
+      30s);
+  ASSERT_TRUE(first && first->status == 200);
+
   // Distinct 1024² EXR tiles over the island at zoom 15 (the cache cannot help): two workers
   // need tens of seconds for all of them.
   std::mutex mutex;
