@@ -1,9 +1,9 @@
 #include "content_encoding.h"
 
 #include <gtest/gtest.h>
-#include <zlib.h>
 
 #include <string>
+#include <zlib.h>
 
 namespace strahler::app {
 namespace {

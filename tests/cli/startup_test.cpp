@@ -152,8 +152,9 @@ TEST(Startup, ServeMapsOpenImageIoOnlyOnceAFloatTileIsAskedFor) {
     const auto tile = fetch(port, getRequest(target), 30s);
     ASSERT_TRUE(tile && tile->status == 200) << target;
   }
-  if (!kOpenImageIoAtStart)
+  if (!kOpenImageIoAtStart) {
     EXPECT_FALSE(mentionsOpenImageIo(mapsOf(serve.pid())));
+  }
   const auto exr = fetch(port, getRequest("/worlds/startup/local/2/1/2.exr?size=32"), 60s);
   ASSERT_TRUE(exr);
   EXPECT_EQ(exr->status, 200) << exr->body;
