@@ -26,10 +26,8 @@ using strahler::testing::ProcessRun;
 using strahler::testing::runProgram;
 
 fs::path scratchDir() {
-  const fs::path dir =
-      fs::path(STRAHLER_BINARY_DIR) / "repair_test_scratch" / std::to_string(::getpid());
-  fs::create_directories(dir);
-  return dir;
+  return strahler::testing::processScratchDir(fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch",
+                                              "repair");
 }
 
 /// Runs strahler with `args`, a cache in the build tree, and collects its output.

@@ -5,8 +5,23 @@
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace strahler::testing {
+
+std::filesystem::path processScratchDir(const std::filesystem::path& root,
+                                        const std::string& name) {
+  const std::filesystem::path dir = root / (name + "-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+std::string readWholeFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 ProcessRun runProgram(const std::string& executable, const std::string& args,
                       const std::filesystem::path& scratch) {

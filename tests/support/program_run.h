@@ -12,6 +12,13 @@ struct ProcessRun {
   std::string err;
 };
 
+/// A folder of this process's own (created if needed): `root`/`name`-<pid>, so that tests
+/// CTest runs in parallel processes never share one.
+std::filesystem::path processScratchDir(const std::filesystem::path& root, const std::string& name);
+
+/// The whole contents of a file ("" if it cannot be read).
+std::string readWholeFile(const std::filesystem::path& path);
+
 /// Runs `executable args` (a shell command line) to its end with STRAHLER_CACHE_DIR set to
 /// `scratch`/cache, never the user's cache; standard error passes through `scratch`/stderr.txt.
 ProcessRun runProgram(const std::string& executable, const std::string& args,
