@@ -17,9 +17,7 @@ namespace {
 using base::ErrorCode;
 using base::makeError;
 
-std::string quoted(const std::string& path) {
-  return "'" + path + "'";
-}
+using detail::quoted;
 
 /// The module, or its loading error prefixed with `label` (what the caller was doing).
 base::Result<const detail::OiioModule*> moduleFor(const std::string& label) {

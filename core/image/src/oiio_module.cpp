@@ -19,9 +19,7 @@ namespace {
 using base::ErrorCode;
 using base::makeError;
 
-std::string quoted(const std::string& path) {
-  return "'" + path + "'";
-}
+using detail::quoted;
 
 /// OIIO error text without trailing newlines, or `fallback` when it has none.
 std::string cleanMessage(std::string text, const char* fallback) {

@@ -21,6 +21,11 @@
 
 namespace strahler::image::detail {
 
+/// `path` in single quotes, as every image error message names its file.
+inline std::string quoted(const std::string& path) {
+  return "'" + path + "'";
+}
+
 /// The image functions that need OpenImageIO, with image.h's contracts. Every implementation
 /// catches its own exceptions: none crosses the module boundary.
 class OiioModule {

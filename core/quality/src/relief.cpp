@@ -264,7 +264,7 @@ ReliefFigures measureRelief(const HeightRaster& raster, const FlowField& flow) {
   figures.dissection = measureDissection(raster);
   figures.highest = kNaN;
   for (std::size_t i = 0; i < raster.heights.size(); ++i)
-    if (d8::isLand(raster, i))
+    if (isLand(raster, i))
       figures.highest = std::isnan(figures.highest)
                             ? double(raster.heights[i])
                             : std::max(figures.highest, double(raster.heights[i]));
