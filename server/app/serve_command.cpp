@@ -32,6 +32,7 @@ constexpr const char* kServeUsage =
     "N]]\n"
     "                      [--host 127.0.0.1] [--port 8080] [--threads N] [--workers N]\n"
     "                      [--cache-mb M] [--cache-dir DIR] [--web-root DIR] [--public-url URL]\n"
+    "                      [--trusted-proxies LIST]\n"
     "                      [--max-client-connections N] [--max-area-km2 N] [--max-extent-km N]\n"
     "                      [--repair] [--quiet]\n"
     "Serves worlds over HTTP: the viewer at /, TileJSON, Web Mercator and local tiles in every\n"
@@ -40,8 +41,10 @@ constexpr const char* kServeUsage =
     "--cache-mb M (default 256) bounds the heap the tile cache holds; RSS stays within it plus\n"
     "the world and a few tens of MB of working memory.\n"
     "--public-url URL (http[s]://host[:port][/prefix]) is the base of absolute URLs (TileJSON's\n"
-    "tiles) behind a proxy; without it they use the address the client connected to, never\n"
-    "the Host header.\n"
+    "tiles) behind a proxy; without it they use X-Forwarded-Proto and X-Forwarded-Host from a\n"
+    "trusted proxy, else the address the client connected to; never the Host header.\n"
+    "--trusted-proxies LIST (default loopback): peers whose X-Forwarded-* headers are believed,\n"
+    "comma-separated: loopback, none, addresses and CIDR networks (e.g. 172.16.0.0/12).\n"
     "--max-area-km2 N, --max-extent-km N: the size a --coast may have (as `strahler generate`).\n"
     "--repair: mend the --coast's topology defects and list each change (as `strahler generate`).\n"
     "--max-client-connections N (default 64) caps the connections of one client address (IPv6:\n"
@@ -111,12 +114,12 @@ std::string findWebRoot(const CliArgs& args) {
 } // namespace
 
 int runServe(const std::vector<std::string>& raw) {
-  auto parsed =
-      CliArgs::parse("serve", raw,
-                     {"--coast", "--params", "--seed", "--host", "--port", "--threads", "--workers",
-                      "--cache-mb", "--cache-dir", "--web-root", "--public-url",
-                      "--max-client-connections", kMaxAreaOption, kMaxExtentOption},
-                     {"--quiet", "--repair", "--help", "-h"});
+  auto parsed = CliArgs::parse("serve", raw,
+                               {"--coast", "--params", "--seed", "--host", "--port", "--threads",
+                                "--workers", "--cache-mb", "--cache-dir", "--web-root",
+                                "--public-url", "--trusted-proxies", "--max-client-connections",
+                                kMaxAreaOption, kMaxExtentOption},
+                               {"--quiet", "--repair", "--help", "-h"});
   if (!parsed)
     return usageError(parsed.error(), kServeUsage);
   const CliArgs& args = parsed.value();
@@ -138,6 +141,12 @@ int runServe(const std::vector<std::string>& raw) {
       return usageError(checked.error(), kServeUsage);
     publicUrl = std::move(checked).value();
   }
+  auto trustedProxies =
+      http::TrustedProxies::parse(args.get("--trusted-proxies").value_or("loopback"));
+  if (!trustedProxies)
+    return usageError(base::makeError(base::ErrorCode::kInvalidInput,
+                                      "--trusted-proxies: " + trustedProxies.error().message),
+                      kServeUsage);
 
   // Block the stop signals in every thread; the main thread waits for them below.
   sigset_t stopSignals;
@@ -166,6 +175,7 @@ int runServe(const std::vector<std::string>& raw) {
   http.port = static_cast<std::uint16_t>(port.value().value_or(8080));
   http.ioThreads = static_cast<int>(threads.value().value_or(cores));
   http.accessLog = !args.has("--quiet");
+  http.trustedProxies = std::move(trustedProxies).value();
   if (perClient.value())
     http.maxConnectionsPerClient = static_cast<std::size_t>(*perClient.value());
   http::Server server(

@@ -1,6 +1,7 @@
 #include "tile_server.h"
 
 #include "content_encoding.h"
+#include "public_url.h"
 #include "route_parser.h"
 #include "tile_route.h"
 
@@ -275,11 +276,12 @@ http::Response TileServer::worldList(const http::Request&) const {
 }
 
 http::Response TileServer::tileJson(const ServedWorld& w, const http::Request& request) const {
-  // Never the Host header: a client could point the tile URLs anywhere (TileJSON 3.0.0 wants
-  // absolute URLs, and MapLibre fetches relative ones from a worker, where they fail).
-  const std::string origin =
-      options_.publicUrl.empty() ? "http://" + request.localAddress : options_.publicUrl;
-  const std::string base = origin + "/worlds/" + w.id;
+  // Absolute URLs (TileJSON 3.0.0 wants them, and MapLibre fetches relative ones from a
+  // worker, where they fail), never from the Host header: see requestOrigin().
+  const auto origin = requestOrigin(options_.publicUrl, request);
+  if (!origin)
+    return http::errorResponse(400, origin.error().message);
+  const std::string base = origin.value() + "/worlds/" + w.id;
   const json tj = {{"tilejson", "3.0.0"},
                    {"name", w.id},
                    {"description", "strahler terrain (Terrain-RGB heightmap)"},
@@ -293,7 +295,10 @@ http::Response TileServer::tileJson(const ServedWorld& w, const http::Request& r
                    {"tileSize", 256},
                    {"encoding", "mapbox"},
                    {"attribution", "strahler"}};
-  return jsonResponse(tj, "tilejson");
+  http::Response r = jsonResponse(tj, "tilejson");
+  if (options_.publicUrl.empty()) // the URLs depend on these headers (from a trusted proxy)
+    r.headers.emplace_back("Vary", "X-Forwarded-Proto, X-Forwarded-Host");
+  return r;
 }
 
 void TileServer::handle(const http::Request& request, std::function<void(http::Response)> done) {

@@ -34,7 +34,8 @@ struct TileServerOptions {
   /// (MemoryTrimmer); 0 never.
   std::chrono::milliseconds trimPeriod{1000};
   /// Origin and path prefix of absolute URLs (TileJSON's tiles), from parsePublicUrl(); "" to
-  /// use the address each client connected to. Never the Host header.
+  /// use a trusted proxy's X-Forwarded-* or the address each client connected to (see
+  /// requestOrigin()). Never the Host header.
   std::string publicUrl;
 };
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "http_types.h"
+#include "trusted_proxies.h"
 
 #include "strahler/base/result.h"
 
@@ -31,6 +32,8 @@ struct ServerOptions {
   std::chrono::milliseconds idleTimeout{30000};  ///< Keep-alive idle time between requests.
   std::chrono::milliseconds writeTimeout{30000}; ///< To send one response.
   bool accessLog = true;                         ///< One line per request on stdout.
+  /// Peers whose X-Forwarded-* headers reach the handler as Request::fromTrustedProxy.
+  TrustedProxies trustedProxies;
 };
 
 /// An HTTP/1.1 server (Boost.Beast) on its own I/O threads. Protocol rules live here:

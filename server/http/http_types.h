@@ -19,6 +19,9 @@ struct Request {
   /// The address the client connected to, as a URL authority ("127.0.0.1:8080",
   /// "[::1]:8080"): the socket's own local endpoint, never taken from the request.
   std::string localAddress;
+  /// True when the peer is one of ServerOptions::trustedProxies: its X-Forwarded-Proto and
+  /// X-Forwarded-Host describe the client's view of the URL and may be used.
+  bool fromTrustedProxy = false;
   /// Becomes true once the client has closed or reset its connection (or the server closed
   /// it): the response can no longer be delivered, so a handler may skip queued work for it.
   /// Null when there is no connection to watch.

@@ -194,10 +194,11 @@ bool isParseError(const ErrorCode& ec) {
 }
 
 Request makeRequest(const bhttp::request_header<>& header, bool head,
-                    const std::string& localAddress,
+                    const std::string& localAddress, bool fromTrustedProxy,
                     const std::shared_ptr<std::atomic<bool>>& clientGone) {
   Request request;
   request.localAddress = localAddress;
+  request.fromTrustedProxy = fromTrustedProxy;
   request.clientGone = clientGone;
   request.method = "GET";
   request.head = head;

@@ -45,7 +45,7 @@ bool isParseError(const ErrorCode& ec);
 /// The handler's view of a parsed request header: target as sent, header names lower-cased,
 /// method "GET" (`head` tells HEAD apart). Only for requests checkRequest() forwards.
 Request makeRequest(const bhttp::request_header<>& header, bool head,
-                    const std::string& localAddress,
+                    const std::string& localAddress, bool fromTrustedProxy,
                     const std::shared_ptr<std::atomic<bool>>& clientGone);
 
 } // namespace strahler::http::detail

@@ -66,6 +66,14 @@ void Session::start() {
   // Responses are written whole (one gather write each); Nagle would only delay pipelined ones.
   socket_.set_option(tcp::no_delay(true), ignored);
   localAddress_ = urlAuthority(socket_.local_endpoint(ignored));
+  if (!options_.trustedProxies.empty()) {
+    const net::ip::address peer = socket_.remote_endpoint(ignored).address();
+    fromTrustedProxy_ =
+        !ignored &&
+        options_.trustedProxies.contains(
+            peer.is_v4() ? net::ip::make_address_v6(net::ip::v4_mapped, peer.to_v4()).to_bytes()
+                         : peer.to_v6().to_bytes());
+  }
   state_->add(shared_from_this(), client_);
   net::dispatch(executor_, [self = shared_from_this()] { self->doRead(); });
 }
@@ -224,7 +232,8 @@ void Session::dispatch() {
   if (!exchange.keepAlive)
     closing_ = true;
   if (verdict.kind == Verdict::Kind::kForward)
-    return callHandler(exchange.sequence, makeRequest(header, head, localAddress_, clientGone_));
+    return callHandler(exchange.sequence,
+                       makeRequest(header, head, localAddress_, fromTrustedProxy_, clientGone_));
   answer(exchange.sequence, std::move(verdict.response));
 }
 

@@ -131,9 +131,10 @@ private:
   Deadline writeDeadline_;
   beast::flat_buffer buffer_;
   boost::optional<RequestParser> parser_;
-  std::deque<Exchange> queue_; ///< Requests whose responses are owed, in order.
-  std::string localAddress_;   ///< Request::localAddress of every request on this connection.
-  std::string client_;         ///< The clientKey() of the peer's address.
+  std::deque<Exchange> queue_;    ///< Requests whose responses are owed, in order.
+  std::string localAddress_;      ///< Request::localAddress of every request on this connection.
+  bool fromTrustedProxy_ = false; ///< Request::fromTrustedProxy of every request on it.
+  std::string client_;            ///< The clientKey() of the peer's address.
   /// Request::clientGone of every request on this connection; set by closeNow() and when the
   /// peer ends or resets the connection while responses are owed.
   std::shared_ptr<std::atomic<bool>> clientGone_ = std::make_shared<std::atomic<bool>>(false);

@@ -49,5 +49,44 @@ TEST(PublicUrl, RefusesAnythingElseSayingWhy) {
   }
 }
 
+/// A request that arrived on 127.0.0.1:8080 with `headers`, from a trusted proxy or not.
+http::Request requestWith(bool trusted, std::vector<std::pair<std::string, std::string>> headers) {
+  http::Request r;
+  r.localAddress = "127.0.0.1:8080";
+  r.fromTrustedProxy = trusted;
+  r.headers = std::move(headers);
+  r.headers.emplace_back("host", "evil.example");
+  return r;
+}
+
+TEST(RequestOrigin, PublicUrlThenTrustedForwardedHeadersThenTheLocalAddress) {
+  const auto proxied = requestWith(true, {{"x-forwarded-proto", "HTTPS, http"},
+                                          {"x-forwarded-host", " Maps.Example.org:8443 "}});
+  EXPECT_EQ(requestOrigin("https://cdn.example.com/p", proxied).value(),
+            "https://cdn.example.com/p");
+  EXPECT_EQ(requestOrigin("", proxied).value(), "https://maps.example.org:8443");
+  EXPECT_EQ(requestOrigin("", requestWith(true, {})).value(), "http://127.0.0.1:8080");
+  EXPECT_EQ(requestOrigin("", requestWith(true, {{"x-forwarded-proto", "https"}})).value(),
+            "https://127.0.0.1:8080");
+  EXPECT_EQ(requestOrigin("", requestWith(true, {{"x-forwarded-host", "[2001:DB8::1]"}})).value(),
+            "http://[2001:db8::1]");
+  auto untrusted = proxied;
+  untrusted.fromTrustedProxy = false;
+  EXPECT_EQ(requestOrigin("", untrusted).value(), "http://127.0.0.1:8080");
+}
+
+TEST(RequestOrigin, RefusesMalformedForwardedHeadersNamingThem) {
+  const std::pair<std::pair<const char*, const char*>, const char*> bad[] = {
+      {{"x-forwarded-proto", "wss"}, "X-Forwarded-Proto 'wss': must be http or https"},
+      {{"x-forwarded-host", "a b"}, "X-Forwarded-Host 'a b': 'a b' is not a host name or address"},
+      {{"x-forwarded-host", "h:0"}, "X-Forwarded-Host 'h:0': port must be a number in 1..65535"},
+      {{"x-forwarded-host", "[::1"}, "X-Forwarded-Host '[::1': unclosed '[' in the host"}};
+  for (const auto& [header, message] : bad) {
+    const auto origin = requestOrigin("", requestWith(true, {{header.first, header.second}}));
+    ASSERT_FALSE(origin.ok()) << header.second;
+    EXPECT_EQ(origin.error().message, message);
+  }
+}
+
 } // namespace
 } // namespace strahler::app

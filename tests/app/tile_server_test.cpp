@@ -47,13 +47,14 @@ HttpResponse request(std::uint16_t port, const std::string& target,
 struct Running {
   TileServer tiles;
   http::Server server;
-  explicit Running(std::size_t cacheBytes = 64u << 20, std::string publicUrl = "")
+  explicit Running(std::size_t cacheBytes = 64u << 20, std::string publicUrl = "",
+                   http::TrustedProxies trusted = {})
       : tiles(
             {{"island", construction::generateWorldData(strahler::testing::defaultIslandSpec(), "k")
                             .value()}},
             serverOptions(cacheBytes, std::move(publicUrl))),
         server(
-            options(),
+            options(std::move(trusted)),
             [this](const http::Request& r, std::function<void(http::Response)> done) {
               tiles.handle(r, std::move(done));
             },
@@ -69,10 +70,11 @@ struct Running {
     o.publicUrl = std::move(publicUrl);
     return o;
   }
-  static http::ServerOptions options() {
+  static http::ServerOptions options(http::TrustedProxies trusted) {
     http::ServerOptions o;
     o.port = 0;
     o.accessLog = false;
+    o.trustedProxies = std::move(trusted);
     return o;
   }
   std::uint16_t port() const { return server.port(); }
@@ -160,6 +162,62 @@ TEST(TileServer, TileJsonNeverCopiesTheHostHeader) {
   EXPECT_EQ(tileJsonUrls(s.port(), "evil.example"),
             std::vector<std::string>{
                 "https://tiles.example.org/terrain/worlds/island/tiles/{z}/{x}/{y}.png"});
+}
+
+/// The TileJSON of a request from this test (127.0.0.1) with `forwarded` header lines.
+HttpResponse forwardedTileJson(std::uint16_t port, const std::string& forwarded) {
+  return request(port, "/worlds/island/tilejson.json", "GET", forwarded);
+}
+
+TEST(TileServer, TileJsonFollowsXForwardedHeadersOfATrustedProxyOnly) {
+  const std::string path = "/worlds/island/tiles/{z}/{x}/{y}.png";
+  const std::string headers =
+      "X-Forwarded-Proto: https\r\nX-Forwarded-Host: Tiles.Example.org, inner.proxy\r\n";
+  const auto tiles = [](const HttpResponse& r) {
+    return nlohmann::json::parse(r.body)["tiles"][0].get<std::string>();
+  };
+  {
+    Running s(64u << 20, "", http::TrustedProxies::parse("loopback").value());
+    const std::string direct = "http://127.0.0.1:" + std::to_string(s.port());
+    const auto proxied = forwardedTileJson(s.port(), headers);
+    ASSERT_EQ(proxied.status, 200);
+    EXPECT_EQ(tiles(proxied), "https://tiles.example.org" + path);
+    EXPECT_EQ(proxied.headers.at("vary"), "X-Forwarded-Proto, X-Forwarded-Host");
+    EXPECT_EQ(tiles(forwardedTileJson(s.port(), "X-Forwarded-Proto: https\r\n")),
+              "https://127.0.0.1:" + std::to_string(s.port()) + path);
+    EXPECT_EQ(tiles(forwardedTileJson(s.port(), "X-Forwarded-Host: [::1]:8443\r\n")),
+              "http://[::1]:8443" + path);
+    EXPECT_EQ(tiles(forwardedTileJson(s.port(), "")), direct + path);
+    // A proxy that sends nonsense gets 400 naming the header, never a URL built from it.
+    const std::pair<const char*, const char*> bad[] = {
+        {"X-Forwarded-Proto: ftp\r\n", "X-Forwarded-Proto 'ftp': must be http or https"},
+        {"X-Forwarded-Host: evil.example/x\r\n",
+         "X-Forwarded-Host 'evil.example/x': 'evil.example/x' is not a host name or address"},
+        {"X-Forwarded-Host: a@b\r\n", "X-Forwarded-Host 'a@b': user info is not allowed"},
+        {"X-Forwarded-Host: b:99999\r\n",
+         "X-Forwarded-Host 'b:99999': port must be a number in 1..65535"}};
+    for (const auto& [line, message] : bad) {
+      const auto r = forwardedTileJson(s.port(), line);
+      EXPECT_EQ(r.status, 400) << line;
+      EXPECT_EQ(nlohmann::json::parse(r.body)["error"], message) << line;
+    }
+    EXPECT_EQ(request(s.port(), "/health").status, 200);
+  }
+  {
+    // Not a trusted peer: the headers are ignored, whatever they say.
+    Running s(64u << 20, "", http::TrustedProxies::parse("10.0.0.0/8, ::1").value());
+    EXPECT_EQ(tiles(forwardedTileJson(s.port(), headers)),
+              "http://127.0.0.1:" + std::to_string(s.port()) + path);
+    EXPECT_EQ(forwardedTileJson(s.port(), "X-Forwarded-Proto: ftp\r\n").status, 200);
+  }
+  {
+    // --public-url wins over the headers, and the answer no longer varies with them.
+    Running s(64u << 20, "https://cdn.example.com/t",
+              http::TrustedProxies::parse("loopback").value());
+    const auto r = forwardedTileJson(s.port(), headers);
+    EXPECT_EQ(tiles(r), "https://cdn.example.com/t" + path);
+    EXPECT_EQ(r.headers.count("vary"), 0u);
+  }
 }
 
 TEST(TileServer, BadRequestsGetTheirStatusAndTheServerStaysHealthy) {

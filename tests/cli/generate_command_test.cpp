@@ -212,7 +212,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"serve --public-url ftp://example.org", 2,
                "--public-url 'ftp://example.org': scheme must be http or https, not 'ftp'"},
         BadRun{"serve --public-url http://example.org:99999", 2,
-               "--public-url 'http://example.org:99999': port must be a number in 1..65535"}),
+               "--public-url 'http://example.org:99999': port must be a number in 1..65535"},
+        BadRun{"serve --trusted-proxies 10.0.0.1/8", 2,
+               "--trusted-proxies: trusted proxy '10.0.0.1/8': the address has bits set beyond "
+               "the prefix length"}),
     [](const ::testing::TestParamInfo<BadRun>& param) {
       return "case" + std::to_string(param.index);
     });

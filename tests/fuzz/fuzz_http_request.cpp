@@ -96,7 +96,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const unsigned version = header.version() == 10 ? 10 : 11;
     if (verdict.kind == Verdict::Kind::kForward)
       keepAlive =
-          !route(makeRequest(header, head, "127.0.0.1:8080", nullptr), version, keepAlive) &&
+          !route(makeRequest(header, head, "127.0.0.1:8080", false, nullptr), version, keepAlive) &&
           keepAlive;
     else
       writeResponse(verdict.response, version, head, keepAlive);
