@@ -1,5 +1,6 @@
 // The map viewer: a world's Terrain-RGB tiles as 3D terrain, colour relief and hillshade, with
-// its river network on top. Tests drive it through window.strahlerMap (the maplibregl.Map).
+// its river network on top, its camera in the URL's hash. Tests drive it through
+// window.strahlerMap (the maplibregl.Map).
 import * as maplibregl from 'maplibre-gl';
 import { loadWorlds, rememberWorld } from './api.js';
 import { ROSGEN_COLOURS, TERRAIN_SOURCE, worldStyle } from './map-style.js';
@@ -58,6 +59,9 @@ async function main() {
     fitBoundsOptions: FIT,
     pitch: 50,
     maxPitch: 80,
+    // The camera lives in the URL (#zoom/lat/lon/bearing/pitch, with ?world=ID), so a view can
+    // be shared or bookmarked; a hash given on load wins over the world's bounds.
+    hash: true,
     // Keeps the last frame readable (screenshots, tests); no fade so "idle" means drawn.
     canvasContextAttributes: { preserveDrawingBuffer: true },
     fadeDuration: 0,

@@ -130,6 +130,34 @@ describe('map viewer', () => {
   });
 });
 
+describe('map viewer camera in the URL', () => {
+  let page, record;
+  after(() => page?.close());
+
+  test('opens at the #zoom/lat/lon/bearing/pitch it is given and keeps the hash current', async () => {
+    const [lon, lat] = (await (await fetch(`${server.url}/worlds`)).json())[0].center;
+    ({ page, record } = await openPage(browser, `${server.url}/#12.5/${lat.toFixed(4)}/${lon.toFixed(4)}/30/60`));
+    // The camera is set when the map is made; no need to wait for its tiles.
+    await page.waitForFunction(() => window.strahlerMap, null, { timeout: STEP_MS });
+    const camera = await page.evaluate(() => {
+      const map = window.strahlerMap;
+      return { zoom: map.getZoom(), center: map.getCenter().toArray(), bearing: map.getBearing(), pitch: map.getPitch() };
+    });
+    assert.ok(Math.abs(camera.zoom - 12.5) < 1e-6, JSON.stringify(camera));
+    assert.ok(Math.abs(camera.center[0] - lon) < 1e-3 && Math.abs(camera.center[1] - lat) < 1e-3, JSON.stringify(camera));
+    assert.ok(Math.abs(camera.bearing - 30) < 1e-6 && Math.abs(camera.pitch - 60) < 1e-6, JSON.stringify(camera));
+
+    // Moving the camera rewrites the hash (MapLibre throttles it), and the world stays in the query.
+    await page.evaluate(([x, y]) => window.strahlerMap.jumpTo({ center: [x, y], zoom: 11, bearing: -45, pitch: 20 }), [lon + 0.01, lat - 0.01]);
+    await page.waitForFunction(() => /^#11\/[-\d.]+\/[-\d.]+\/-45\/20$/.test(location.hash), null, { timeout: 10_000 });
+    const url = new URL(await page.evaluate(() => location.href));
+    assert.ok(url.searchParams.get('world'), `the world is not in ${url}`);
+    const [, hashLat, hashLon] = url.hash.slice(1).split('/').map(Number);
+    assert.ok(Math.abs(hashLat - (lat - 0.01)) < 1e-3 && Math.abs(hashLon - (lon + 0.01)) < 1e-3, url.hash);
+    assert.deepEqual(record.errors, [], 'console errors, exceptions or failed requests');
+  });
+});
+
 describe('game client', () => {
   let page, record;
   const stats = () => page.evaluate(() => ({ ...window.strahlerGame.stats, frames: window.strahlerGame.frames }));
