@@ -5,6 +5,8 @@ set -euo pipefail
 
 packages=(
   g++ cmake ninja-build ccache pkg-config git clang-format
+  # dpkg-shlibdeps, which CPack's Debian package (tests/cli/package_test.cpp) needs
+  dpkg-dev
   libboost-dev libboost-system-dev
   libcgal-dev
   libopenimageio-dev

@@ -3,6 +3,8 @@
 #include "serve_command.h"
 #include "world_commands.h"
 
+#include "strahler/construction/world_builder.h"
+
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -19,7 +21,7 @@ constexpr const char* kUsage =
     "  tile       write one heightmap or mesh tile of a world file\n"
     "  serve      serve worlds over HTTP (viewer, TileJSON, tiles, metrics)\n"
     "  help       show this text (strahler <command> --help for a command's options)\n"
-    "  version    print the version\n";
+    "  version    print the version and the terrain generator's version\n";
 
 } // namespace
 
@@ -48,7 +50,9 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (command == "version" || command == "--version") {
-    std::puts("strahler " STRAHLER_VERSION);
+    // The generator version names the terrain a world file holds (and keys the world cache).
+    std::printf("strahler %s\ngenerator %s\n", STRAHLER_VERSION,
+                strahler::construction::kGeneratorVersion);
     return 0;
   }
   std::fprintf(stderr, "strahler: unknown command '%s'\n%s", command.c_str(), kUsage);

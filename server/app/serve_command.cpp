@@ -6,6 +6,7 @@
 #include "public_url.h"
 #include "terminal_progress.h"
 #include "tile_server.h"
+#include "web_root.h"
 #include "world_limits.h"
 #include "world_loader.h"
 
@@ -101,16 +102,6 @@ loadWorlds(const CliArgs& args) {
   return worlds;
 }
 
-/// The built viewer next to the program or in the source tree, if any.
-std::string findWebRoot(const CliArgs& args) {
-  if (auto root = args.get("--web-root"))
-    return *root;
-  for (const char* candidate : {"web/dist", "../web/dist", "/usr/share/strahler/web"})
-    if (std::filesystem::exists(std::filesystem::path(candidate) / "index.html"))
-      return candidate;
-  return "";
-}
-
 } // namespace
 
 int runServe(const std::vector<std::string>& raw) {
@@ -166,7 +157,7 @@ int runServe(const std::vector<std::string>& raw) {
   TileServerOptions options;
   options.workers = static_cast<int>(workers.value().value_or(cores));
   options.cacheBytes = static_cast<std::size_t>(cacheMb.value().value_or(256)) << 20;
-  options.webRoot = findWebRoot(args);
+  options.webRoot = findWebRoot(args.get("--web-root"));
   options.publicUrl = publicUrl;
   TileServer tiles(std::move(worlds).value(), options);
 
