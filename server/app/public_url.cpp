@@ -91,8 +91,6 @@ base::Result<std::string> parsePublicUrl(const std::string& url) {
   const std::size_t pathStart = std::min(url.find('/', hostStart), url.size());
   const std::string authority = url.substr(hostStart, pathStart - hostStart);
   std::string path = url.substr(pathStart);
-  if (authority.find('@') != std::string::npos)
-    return badUrl(url, "user info is not allowed");
   if (url.find_first_of("?#") != std::string::npos)
     return badUrl(url, "a query or fragment is not allowed");
   auto host = normaliseAuthority(authority);
