@@ -73,9 +73,24 @@ trap 'cleanup; exit 130' INT
 trap 'cleanup; exit 143' TERM
 trap cleanup EXIT
 
-# A free port on 127.0.0.1 (the kernel's choice; a small window remains before nginx binds it).
+# A free port on 127.0.0.1 for nginx, chosen before the replicas start (their --public-url
+# names it). It is drawn below the kernel's ephemeral range, so neither the replicas' ports nor
+# any connection's local port can take it before nginx binds it.
 free_port() {
-  /usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'
+  /usr/bin/python3 - <<'PY'
+import random, socket
+low = int(open("/proc/sys/net/ipv4/ip_local_port_range").read().split()[0])
+for port in random.sample(range(10000, max(low, 10001)), min(500, max(low - 10000, 1))):
+    with socket.socket() as s:
+        try:
+            s.bind(("127.0.0.1", port))
+        except OSError:
+            continue
+        print(port)
+        break
+else:
+    raise SystemExit("scale-out: no free port below the ephemeral range")
+PY
 }
 [ "$port" = 0 ] && port="$(free_port)"
 public_url="${STRAHLER_SCALE_PUBLIC_URL:-http://127.0.0.1:$port}"

@@ -5,7 +5,8 @@
   1. the replicas answer the same tile with the same bytes and ETag (png, png16, terrarium,
      drc, glb);
   2. nginx caches: the second request for a tile is X-Cache-Status HIT, same bytes and ETag;
-  3. If-None-Match through nginx gets 304, for a cached and for an uncached tile;
+  3. If-None-Match through nginx gets 304, for a cached and for an uncached tile; /health,
+     /metrics and /worlds are not cached; TileJSON names nginx's address (--public-url);
   4. a 10 s wrk run through nginx has no error and no status other than 200/304;
   5. SIGKILL of a replica during a stream of uncached tiles through nginx loses no request:
      every one is 200 with the bytes and ETag the surviving replica gives;
@@ -207,6 +208,21 @@ def conditional_requests(kit):
         print(f"ok   nginx {path} If-None-Match: 304 ({want}); another ETag: 200")
 
 
+def other_endpoints(kit):
+    """What must not be cached stays fresh through nginx; TileJSON names nginx's address."""
+    nginx_port = kit.nginx[1]
+    for path in ["/health", "/metrics", "/worlds"]:
+        replies = [get(nginx_port, path) for _ in range(2)]
+        check(all(r.status == 200 for r in replies), f"nginx {path}: {[r.status for r in replies]}")
+        check(replies[1].header("x-cache-status") != "HIT", f"nginx {path}: served from its cache")
+    tilejson = get(nginx_port, "/worlds/default/tilejson.json")
+    check(tilejson.status == 200, f"nginx tilejson: {tilejson.status}")
+    base = f"http://127.0.0.1:{nginx_port}/worlds/default/tiles/"
+    check(base.encode() in tilejson.body,
+          f"TileJSON does not name nginx's address {base}: {tilejson.body[:300]!r}")
+    print("ok   /health, /metrics, /worlds not cached by nginx; TileJSON's tiles name nginx's address")
+
+
 def wrk_run(kit, source_dir, scratch):
     nginx_port = kit.nginx[1]
     paths = []
@@ -334,6 +350,7 @@ def main():
         identical_replicas(kit)
         nginx_caches(kit)
         conditional_requests(kit)
+        other_endpoints(kit)
         wrk_run(kit, source_dir, scratch)
         kill_a_replica(kit)
         pids = [pid for pid, _ in kit.replicas] + [kit.nginx[0]]
