@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The scale-out kit run for real on loopback (issue 18): scripts/scale-out/run.sh starts two
+"""The scale-out kit run for real on loopback (issue 18): scripts/scale-out/run.sh starts three
 `strahler serve` replicas behind Debian's nginx; this checks that
 
   1. the replicas answer the same tile with the same bytes and ETag (png, png16, terrarium,
@@ -9,8 +9,9 @@
      /metrics and /worlds are not cached; TileJSON names nginx's address (--public-url);
   4. a 10 s wrk run through nginx has no error and no status other than 200/304;
   5. SIGKILL of a replica during a stream of uncached tiles through nginx loses no request:
-     every one is 200 with the bytes and ETag the surviving replica gives;
-  6. SIGTERM stops every process of the kit and removes its scratch folder.
+     every one is 200 with the bytes and ETag the surviving replica gives; then the same for
+     SIGTERM of a second replica (it drains: queued tiles get 503, which nginx retries);
+  6. SIGTERM to run.sh stops every process of the kit and removes its scratch folder.
 
 Usage: scale_out_test.py STRAHLER_BINARY SOURCE_DIR SCRATCH_DIR. Fails (never skips) when nginx,
 wrk or curl is missing. Every wait is bounded; the whole takes about 30-40 s.
@@ -29,7 +30,7 @@ import time
 
 READY_TIMEOUT_S = 90  # world generation (first run of a build folder) and three starts
 WRK_SECONDS = 10
-KILL_TILES = 160
+KILL_TILES = 128
 KILL_AFTER = 20  # answers received before the replica is killed
 STOP_TIMEOUT_S = 15  # a replica drains within 4 s plus its tile; nginx stops at once
 
@@ -82,7 +83,7 @@ class Kit:
         env.pop("STRAHLER_SCALE_DIR", None)
         self.lines = []
         self.process = subprocess.Popen(
-            [os.path.join(source_dir, "scripts/scale-out/run.sh"), "2", "--threads", "2",
+            [os.path.join(source_dir, "scripts/scale-out/run.sh"), "3", "--threads", "2",
              "--workers", "2", "--cache-mb", "64"],
             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env,
             start_new_session=True)
@@ -255,22 +256,17 @@ def wrk_run(kit, source_dir, scratch):
           f"p50 {figures['p50_ms']} ms, p99 {figures['p99_ms']} ms, 0 errors")
 
 
-def kill_a_replica(kit):
+def stream_through_a_stop(kit, victim, how, paths, clients):
+    """`paths` through nginx from `clients` keep-alive clients; after KILL_AFTER answers the
+    replica `victim` (an index into kit.replicas) gets signal `how`. Every answer must be 200
+    with the bytes and ETag the last replica (the survivor) gives directly. Returns the seconds
+    taken and the lines of nginx's error log that name the victim."""
     nginx_port = kit.nginx[1]
-    victim_pid, victim_port = kit.replicas[0]
-    survivor_port = kit.replicas[1][1]
-    # Distinct tiles nothing asked for before (zoom 14), half of them meshes: tens of ms each,
-    # so several are being computed on the victim when it dies.
-    cx, cy = web_tile(14, LON, LAT)
-    paths = []
-    for i in range(KILL_TILES):
-        x, y = cx - 8 + i % 16, cy - 5 + i // 16
-        paths.append(f"/worlds/default/tiles/14/{x}/{y}.png" if i % 2 == 0
-                     else f"/worlds/default/tiles/14/{x}/{y}.drc")
+    victim_pid, victim_port = kit.replicas[victim]
+    survivor_port = kit.replicas[-1][1]
     answers = {}
     lock = threading.Lock()
-    killed = threading.Event()
-    killed_after = []
+    signalled = threading.Event()
 
     def client(share):
         conn = http.client.HTTPConnection("127.0.0.1", nginx_port, timeout=30)
@@ -284,22 +280,22 @@ def kill_a_replica(kit):
                     reply = Reply(None, {}, repr(error).encode())
                 with lock:
                     answers[path] = reply
-                    if len(answers) == KILL_AFTER and not killed.is_set():
-                        os.kill(victim_pid, signal.SIGKILL)
-                        killed.set()
-                        killed_after.append(time.monotonic())
+                    if len(answers) == KILL_AFTER and not signalled.is_set():
+                        os.kill(victim_pid, how)
+                        signalled.set()
         finally:
             conn.close()
 
-    shares = [paths[i::4] for i in range(4)]
     start = time.monotonic()
-    with concurrent.futures.ThreadPoolExecutor(4) as pool:
-        for future in [pool.submit(client, share) for share in shares]:
+    with concurrent.futures.ThreadPoolExecutor(clients) as pool:
+        for future in [pool.submit(client, paths[i::clients]) for i in range(clients)]:
             future.result(timeout=120)
-    check(killed.is_set(), "the replica was never killed")
+    took = time.monotonic() - start
+    name = signal.Signals(how).name
+    check(signalled.is_set(), f"replica :{victim_port} never got {name}")
     bad = {p: r.status for p, r in answers.items() if r.status != 200}
     check(len(answers) == len(paths) and not bad,
-          f"requests lost when replica :{victim_port} was killed: {len(bad)} of {len(paths)}: "
+          f"requests lost when replica :{victim_port} got {name}: {len(bad)} of {len(paths)}: "
           + ", ".join(f"{p} -> {s}" for p, s in list(bad.items())[:10]))
     for path, reply in answers.items():
         direct = get(survivor_port, path)
@@ -307,14 +303,57 @@ def kill_a_replica(kit):
         check(reply.body == direct.body, f"{path}: nginx's bytes differ from the survivor's")
         check(reply.header("etag") == direct.header("etag"),
               f"{path}: ETag {reply.header('etag')} vs the survivor's {direct.header('etag')}")
-    # The kill must have been felt: nginx logged failures talking to the dead replica.
     with open(os.path.join(kit.scratch, "nginx/error.log")) as log:
         failures = [l for l in log if f"127.0.0.1:{victim_port}" in l]
+    return took, failures
+
+
+def kinds(failures):
+    """nginx's error lines summed up by what failed, e.g. {"connect() failed (111: ...)": 3}."""
+    counts = {}
+    for line in failures:
+        m = re.search(r"\*\d+ (.*?)(?: while |, client:)", line)
+        kind = m[1] if m else line.strip()
+        counts[kind] = counts.get(kind, 0) + 1
+    return counts
+
+
+def zoom_tiles(zoom, count, formats):
+    """`count` distinct tiles nothing asked for before, around the island's centre at `zoom`,
+    cycling through `formats` (extension and query)."""
+    cx, cy = web_tile(zoom, LON, LAT)
+    return [f"/worlds/default/tiles/{zoom}/{cx - 8 + i % 16}/{cy - 5 + i // 16}."
+            + formats[i % len(formats)] for i in range(count)]
+
+
+def kill_a_replica(kit):
+    """SIGKILL: in-flight requests see a reset, later ones a refused connection."""
+    victim_port = kit.replicas[0][1]
+    # 512² png and 128² drc at zoom 14 from eight clients: tens to hundreds of ms each, so the
+    # victim is computing some when it dies.
+    paths = zoom_tiles(14, KILL_TILES, ["png?size=512", "drc?size=128"])
+    took, failures = stream_through_a_stop(kit, 0, signal.SIGKILL, paths, 8)
+    # The kill must have been felt: nginx logged failures talking to the dead replica.
     check(failures, f"nginx's error log names no failure of the killed replica :{victim_port}")
     print(f"ok   SIGKILL of replica :{victim_port} after {KILL_AFTER} of {len(paths)} distinct "
           f"uncached tiles: all {len(paths)} answered 200 with the survivor's bytes and ETags "
-          f"in {time.monotonic() - start:.1f} s; nginx logged {len(failures)} failures and "
-          f"retried them")
+          f"in {took:.1f} s; nginx retried after {kinds(failures)}")
+
+
+def drain_a_replica(kit):
+    """SIGTERM: the replica answers its queued tiles 503 and closes; nginx retries them."""
+    victim_pid, victim_port = kit.replicas[1]
+    # Larger tiles at zoom 15 and eight clients, so tiles are queued on the victim when it
+    # begins to drain.
+    paths = zoom_tiles(15, KILL_TILES, ["png?size=512", "glb?size=128"])
+    took, failures = stream_through_a_stop(kit, 1, signal.SIGTERM, paths, 8)
+    deadline = time.monotonic() + 8
+    while alive(victim_pid) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    check(not alive(victim_pid), f"replica :{victim_port} still running 8 s after SIGTERM")
+    print(f"ok   SIGTERM of replica :{victim_port} after {KILL_AFTER} of {len(paths)} distinct "
+          f"uncached tiles: all answered 200 with the survivor's bytes and ETags in {took:.1f} s "
+          f"(nginx's errors: {kinds(failures)}); the replica exited")
 
 
 def alive(pid):
@@ -346,13 +385,14 @@ def main():
     kit = Kit(binary, source_dir, os.path.join(scratch, "cache"))
     stopped = False
     try:
-        check(len(kit.replicas) == 2, f"want 2 replicas, the kit printed {kit.replicas}")
+        check(len(kit.replicas) == 3, f"want 3 replicas, the kit printed {kit.replicas}")
         identical_replicas(kit)
         nginx_caches(kit)
         conditional_requests(kit)
         other_endpoints(kit)
         wrk_run(kit, source_dir, scratch)
         kill_a_replica(kit)
+        drain_a_replica(kit)
         pids = [pid for pid, _ in kit.replicas] + [kit.nginx[0]]
         took = kit.stop()
         stopped = True
@@ -360,7 +400,7 @@ def main():
         check(not any(alive(pid) for pid in pids),
               f"processes left after SIGTERM: {[pid for pid in pids if alive(pid)]}")
         check(not os.path.exists(kit.scratch), f"scratch folder {kit.scratch} left behind")
-        print(f"ok   SIGTERM: run.sh stopped nginx and the replica in {took:.1f} s and removed "
+        print(f"ok   SIGTERM: run.sh stopped nginx and the replicas in {took:.1f} s and removed "
               f"{kit.scratch}")
     finally:
         if not stopped:
