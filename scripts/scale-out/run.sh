@@ -53,6 +53,7 @@ chmod 755 "$work"
 
 pids=()
 stopping=0
+# shellcheck disable=SC2317 # (called by the traps)
 cleanup() {
   [ "$stopping" -eq 1 ] && return
   stopping=1
