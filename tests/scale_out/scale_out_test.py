@@ -19,6 +19,7 @@ wrk or curl is missing. Every wait is bounded; the whole takes about 30-40 s.
 
 import concurrent.futures
 import http.client
+import math
 import os
 import re
 import shutil
@@ -135,7 +136,6 @@ class Kit:
 
 def web_tile(zoom, lon, lat):
     """The Web Mercator tile (x, y) holding a point."""
-    import math
     n = 2 ** zoom
     x = int((lon + 180) / 360 * n)
     y = int((1 - math.asinh(math.tan(math.radians(lat))) / math.pi) / 2 * n)
@@ -153,7 +153,7 @@ def identical_replicas(kit):
              f"/worlds/default/tiles/12/{x // 2}/{y // 2}.png?encoding=terrarium",
              f"/worlds/default/tiles/13/{x}/{y + 1}.drc",
              f"/worlds/default/tiles/13/{x - 1}/{y}.glb",
-             f"/worlds/default/local/3/2/5.glb?size=16"]
+             "/worlds/default/local/3/2/5.glb?size=16"]
     for path in paths:
         replies = [get(port, path) for _, port in kit.replicas]
         for (_, port), reply in zip(kit.replicas, replies):
