@@ -17,6 +17,8 @@ packages=(
   # clang and its runtimes (libFuzzer, sanitizers) for the fuzz harnesses: scripts/fuzz.sh
   clang libclang-rt-14-dev
   chromium
+  # the scale-out kit and its test (scripts/scale-out, tests/scale_out), the load test
+  nginx-light wrk curl python3
 )
 
 missing=()
