@@ -10,7 +10,9 @@
 #   STRAHLER_SCALE_PORT          nginx's port on 127.0.0.1 (default 8080; 0 picks a free one)
 #   STRAHLER_SCALE_REPLICA_PORT  first replica's port, the others follow (default 0: each
 #                                replica picks a free one)
-#   STRAHLER_SCALE_PUBLIC_URL    the replicas' --public-url (default nginx's address)
+#   STRAHLER_SCALE_PUBLIC_URL    the replicas' --public-url (default none: TileJSON names the
+#                                host the client asked nginx for, from nginx's X-Forwarded-*
+#                                headers, which the replicas trust from loopback)
 #   STRAHLER_SCALE_DIR           scratch folder for nginx's files and the logs (default: a new
 #                                temporary folder); removed on exit
 #   STRAHLER_BIN                 the program (default build/release/bin/strahler, built if missing)
@@ -74,8 +76,7 @@ trap 'cleanup; exit 130' INT
 trap 'cleanup; exit 143' TERM
 trap cleanup EXIT
 
-# A free port on 127.0.0.1 for nginx, chosen before the replicas start (their --public-url
-# names it). It is drawn below the kernel's ephemeral range, so neither the replicas' ports nor
+# A free port on 127.0.0.1 for nginx, chosen before the replicas start. It is drawn below the kernel's ephemeral range, so neither the replicas' ports nor
 # any connection's local port can take it before nginx binds it.
 free_port() {
   /usr/bin/python3 - <<'PY'
@@ -94,7 +95,8 @@ else:
 PY
 }
 [ "$port" = 0 ] && port="$(free_port)"
-public_url="${STRAHLER_SCALE_PUBLIC_URL:-http://127.0.0.1:$port}"
+public_url=()
+[ -n "${STRAHLER_SCALE_PUBLIC_URL:-}" ] && public_url=(--public-url "$STRAHLER_SCALE_PUBLIC_URL")
 
 wait_healthy() { # url pid log
   for _ in $(seq 1 1200); do
@@ -111,7 +113,7 @@ wait_healthy() { # url pid log
 start_replica() {
   local i="$1" p=0 log="$work/replica-$1.log"
   [ "$replica_port" != 0 ] && p=$((replica_port + i - 1))
-  "$bin" serve --quiet --host 127.0.0.1 --port "$p" --public-url "$public_url" \
+  "$bin" serve --quiet --host 127.0.0.1 --port "$p" "${public_url[@]}" \
     --max-client-connections 0 "${serve_args[@]}" >"$log" 2>&1 &
   local pid=$!
   pids+=("$pid")

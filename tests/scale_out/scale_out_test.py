@@ -6,7 +6,8 @@
      drc, glb);
   2. nginx caches: the second request for a tile is X-Cache-Status HIT, same bytes and ETag;
   3. If-None-Match through nginx gets 304, for a cached and for an uncached tile; /health,
-     /metrics and /worlds are not cached; TileJSON names nginx's address (--public-url);
+     /metrics and /worlds are not cached; TileJSON names the host the client asked nginx for
+     (nginx's X-Forwarded-Host, which the replicas trust from loopback);
   4. a 10 s wrk run through nginx has no error and no status other than 200/304;
   5. SIGKILL of a replica during a stream of uncached tiles through nginx loses no request:
      every one is 200 with the bytes and ETag the surviving replica gives; then the same for
@@ -210,7 +211,7 @@ def conditional_requests(kit):
 
 
 def other_endpoints(kit):
-    """What must not be cached stays fresh through nginx; TileJSON names nginx's address."""
+    """What must not be cached stays fresh through nginx; TileJSON names the host asked for."""
     nginx_port = kit.nginx[1]
     for path in ["/health", "/metrics", "/worlds"]:
         replies = [get(nginx_port, path) for _ in range(2)]
@@ -221,7 +222,11 @@ def other_endpoints(kit):
     base = f"http://127.0.0.1:{nginx_port}/worlds/default/tiles/"
     check(base.encode() in tilejson.body,
           f"TileJSON does not name nginx's address {base}: {tilejson.body[:300]!r}")
-    print("ok   /health, /metrics, /worlds not cached by nginx; TileJSON's tiles name nginx's address")
+    # Another name for the same nginx (as behind DNS): the URLs follow it, through nginx only.
+    named = get(nginx_port, "/worlds/default/tilejson.json", {"Host": "tiles.example.org:8443"})
+    check(b'"http://tiles.example.org:8443/worlds/default/tiles/' in named.body,
+          f"TileJSON does not follow the Host asked of nginx: {named.body[:300]!r}")
+    print("ok   /health, /metrics, /worlds not cached by nginx; TileJSON's tiles name the host asked of nginx")
 
 
 def wrk_run(kit, source_dir, scratch):
