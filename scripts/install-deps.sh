@@ -10,6 +10,7 @@ packages=(
   libopenimageio-dev
   libspng-dev libdraco-dev libeigen3-dev
   nlohmann-json3-dev
+  libsqlite3-dev sqlite3
   libprotobuf-dev protobuf-compiler
   googletest libgtest-dev libbenchmark-dev
   # clang and its runtimes (libFuzzer, sanitizers) for the fuzz harnesses: scripts/fuzz.sh
