@@ -2,8 +2,9 @@
 # Throughput of `strahler export`: Mallorca (tests/data/mallorca.geojson, ~3,640 km²) to a
 # PMTiles archive of Web Mercator zooms 0..ZOOM, once with --threads 1 and once with
 # --threads 2. Prints, per run, the tiles, the wall and CPU time (user + system of the child,
-# from wait4) and tiles per second of wall time and per CPU-second (≈ per core), and checks
-# that both archives are byte-identical (the export is deterministic).
+# from wait4), tiles per second of wall time and per CPU-second (≈ per core) and the peak
+# resident memory, and checks that both archives are byte-identical (the export is
+# deterministic).
 # Usage: scripts/bench/export.sh [STRAHLER] [ZOOM]
 #   STRAHLER defaults to build/release/bin/strahler, ZOOM to 13.
 #   The world is generated once into build/bench-export/ (strahler generate --coast ...).
@@ -39,7 +40,7 @@ for threads in (1, 2):
     cpu = usage.ru_utime + usage.ru_stime
     print(f"--threads {threads}: {tiles} tiles, wall {wall:.1f} s, CPU {cpu:.1f} s, "
           f"{tiles / wall:.0f} tiles/s, {tiles / cpu:.0f} tiles per CPU-second, "
-          f"{os.path.getsize(out)} bytes")
+          f"{os.path.getsize(out)} bytes, max RSS {usage.ru_maxrss / 1024:.0f} MB")
     archives.append(out)
 same = open(archives[0], "rb").read() == open(archives[1], "rb").read()
 print("archives byte-identical" if same else "ARCHIVES DIFFER")

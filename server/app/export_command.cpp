@@ -18,6 +18,7 @@
 #include <condition_variable>
 #include <csignal>
 #include <cstdio>
+#include <fcntl.h>
 #include <filesystem>
 #include <mutex>
 #include <optional>
@@ -182,6 +183,11 @@ public:
 
   const std::string& path() const noexcept { return path_; }
   base::Status commit() {
+    // The data reaches the disk before the name does (SQLite runs with synchronous = OFF).
+    if (const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC); fd >= 0) {
+      ::fsync(fd);
+      ::close(fd);
+    }
     std::error_code ec;
     fs::rename(path_, final_, ec);
     if (ec)
