@@ -37,8 +37,9 @@ for threads in (1, 2):
     if status != 0:
         sys.exit(f"export failed: {summary}")
     tiles = int(summary.split()[1])
+    unique = int(summary.split("(")[1].split()[0])
     cpu = usage.ru_utime + usage.ru_stime
-    print(f"--threads {threads}: {tiles} tiles, wall {wall:.1f} s, CPU {cpu:.1f} s, "
+    print(f"--threads {threads}: {tiles} tiles ({unique} unique), wall {wall:.1f} s, CPU {cpu:.1f} s, "
           f"{tiles / wall:.0f} tiles/s, {tiles / cpu:.0f} tiles per CPU-second, "
           f"{os.path.getsize(out)} bytes, max RSS {usage.ru_maxrss / 1024:.0f} MB")
     archives.append(out)
