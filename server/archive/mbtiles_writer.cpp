@@ -1,7 +1,5 @@
 #include "mbtiles_writer.h"
 
-#include "content_hash.h"
-
 #include <cstdio>
 #include <sqlite3.h>
 
@@ -80,8 +78,9 @@ base::Status MbtilesWriter::execute(const char* sql) {
 base::Status MbtilesWriter::addTile(TileCoord tile, std::string_view bytes) {
   if (finished_)
     return makeError(ErrorCode::kInternal, "mbtiles: tile added after finish");
-  const std::string id = hashContent(bytes).toHex();
-  if (stored_.insert(id).second) {
+  const ContentHash hash = hashContent(bytes);
+  const std::string id = hash.toHex();
+  if (stored_.insert(hash).second) {
     sqlite3_reset(insertImage_);
     sqlite3_bind_blob64(insertImage_, 1, bytes.data(), bytes.size(), SQLITE_STATIC);
     sqlite3_bind_text(insertImage_, 2, id.c_str(), -1, SQLITE_STATIC);

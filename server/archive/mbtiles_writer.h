@@ -1,5 +1,6 @@
 #pragma once
 
+#include "content_hash.h"
 #include "tile_archive.h"
 
 #include <memory>
@@ -37,7 +38,7 @@ private:
   sqlite3* db_ = nullptr;
   sqlite3_stmt* insertMap_ = nullptr;
   sqlite3_stmt* insertImage_ = nullptr;
-  std::unordered_set<std::string> stored_; ///< Hex hashes already in `images`.
+  std::unordered_set<ContentHash, ContentHashHasher> stored_; ///< Contents in `images`.
   ArchiveStats stats_;
   bool finished_ = false;
 };
