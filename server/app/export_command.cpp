@@ -5,6 +5,7 @@
 #include "export_plan.h"
 #include "hilbert_tile_id.h"
 #include "mbtiles_writer.h"
+#include "ordered_renderer.h"
 #include "pmtiles_writer.h"
 #include "terminal_progress.h"
 #include "tile_service.h"
@@ -225,96 +226,42 @@ std::string formatSeconds(double s) {
   return text;
 }
 
-/// Renders the tiles `ids` on `threads` workers and hands them to `sink` in that order (so the
-/// archive does not depend on the thread count). At most a window of finished tiles waits.
-/// Stops early, with kInternal "interrupted", when a signal arrives.
+/// Shows progress with an ETA at most every 200 ms.
+void showProgress(TerminalProgress& progress, std::size_t done, std::size_t total,
+                  Clock::time_point start, Clock::time_point& last) {
+  const auto now = Clock::now();
+  if (!progress.enabled() || now - last < std::chrono::milliseconds(200))
+    return;
+  last = now;
+  const double elapsed = std::chrono::duration<double>(now - start).count();
+  const double fraction = static_cast<double>(done) / static_cast<double>(total);
+  progress.update("export", fraction,
+                  std::to_string(done) + "/" + std::to_string(total) + " tiles, ETA " +
+                      formatSeconds(elapsed / fraction * (1.0 - fraction)));
+}
+
+/// Renders the tiles `ids` and hands them to `sink` in that order. Stops early, with kInternal
+/// "interrupted", when SIGINT or SIGTERM arrives.
 base::Status renderInOrder(const TileService& service, const ExportOptions& options,
                            const std::vector<std::uint64_t>& ids, archive::TileArchiveSink& sink,
                            TerminalProgress& progress) {
-  const std::size_t window = 32 * static_cast<std::size_t>(options.threads);
-  std::vector<std::optional<std::string>> slots(window);
-  std::mutex mutex;
-  std::condition_variable changed;
-  std::size_t next = 0, written = 0;
-  bool stop = false;
-  std::optional<base::Error> failure;
-
-  auto work = [&] {
-    std::unique_lock lock(mutex);
-    for (;;) {
-      changed.wait(lock, [&] { return stop || next >= ids.size() || next < written + window; });
-      if (stop || next >= ids.size())
-        return;
-      const std::size_t i = next++;
-      lock.unlock();
-      const archive::TileCoord c = archive::tileIdToZxy(ids[i]);
-      TileRequest request;
-      request.tile = {c.z, c.x, c.y};
-      request.format = options.tile;
-      request.size = options.size;
-      auto tile = service.render(request);
-      lock.lock();
-      if (!tile) {
-        failure = tile.error();
-        stop = true;
-      } else {
-        slots[i % window] = std::move(tile.value().bytes);
-      }
-      changed.notify_all();
-    }
-  };
-  std::vector<std::thread> workers;
-  for (int t = 0; t < options.threads; ++t)
-    workers.emplace_back(work);
-
-  base::Status status = base::Ok{};
+  OrderedRenderer renderer(service, {options.tile, options.size, options.threads}, ids);
   const auto start = Clock::now();
-  auto lastReport = start - std::chrono::seconds(1);
-  while (written < ids.size()) {
-    std::unique_lock lock(mutex);
-    changed.wait_for(lock, std::chrono::milliseconds(100),
-                     [&] { return stop || slots[written % window].has_value(); });
-    if (gSignal.load() != 0 && !stop) {
-      stop = true;
-      status = makeError(ErrorCode::kInternal, "interrupted");
-    }
-    if (stop)
-      break;
-    if (!slots[written % window])
+  auto last = start - std::chrono::seconds(1);
+  for (std::size_t written = 0; written < ids.size();) {
+    if (gSignal.load() != 0)
+      return makeError(ErrorCode::kInternal, "interrupted");
+    std::optional<std::string> bytes = renderer.take(std::chrono::milliseconds(100));
+    if (!bytes) {
+      if (auto failure = renderer.failure())
+        return *failure;
       continue;
-    const std::string bytes = std::move(*slots[written % window]);
-    slots[written % window].reset();
-    const std::size_t i = written++;
-    changed.notify_all();
-    lock.unlock();
-    if (status = sink.addTile(archive::tileIdToZxy(ids[i]), bytes); !status) {
-      lock.lock();
-      stop = true;
-      changed.notify_all();
-      break;
     }
-    if (const auto now = Clock::now();
-        progress.enabled() && now - lastReport > std::chrono::milliseconds(200)) {
-      lastReport = now;
-      const double elapsed = std::chrono::duration<double>(now - start).count();
-      const double fraction = static_cast<double>(written) / static_cast<double>(ids.size());
-      progress.update("export", fraction,
-                      std::to_string(written) + "/" + std::to_string(ids.size()) + " tiles, ETA " +
-                          formatSeconds(elapsed / fraction * (1.0 - fraction)));
-    }
+    STRAHLER_RETURN_IF_ERROR(sink.addTile(archive::tileIdToZxy(ids[written]), *bytes));
+    showProgress(progress, ++written, ids.size(), start, last);
   }
-  {
-    std::lock_guard lock(mutex);
-    stop = true;
-  }
-  changed.notify_all();
-  for (std::thread& w : workers)
-    w.join();
-  if (failure)
-    return *failure;
-  if (status && written == ids.size())
-    progress.update("export", 1.0, std::to_string(written) + " tiles");
-  return status;
+  progress.update("export", 1.0, std::to_string(ids.size()) + " tiles");
+  return base::Ok{};
 }
 
 archive::ArchiveMetadata metadataFor(const construction::WorldData& world, const ExportOptions& o,
@@ -360,11 +307,86 @@ base::Result<std::unique_ptr<archive::TileArchiveSink>> openSink(ArchiveKind kin
   return std::unique_ptr<archive::TileArchiveSink>(std::move(w));
 }
 
+/// Renders every tile into the archive at `temporary` and renames it to its final name.
+base::Status writeArchive(const TileService& service, const ExportOptions& o,
+                          const std::vector<std::uint64_t>& ids,
+                          const archive::ArchiveMetadata& metadata, TemporaryOutput& temporary,
+                          archive::ArchiveStats& stats) {
+  STRAHLER_ASSIGN_OR_RETURN(auto sink, openSink(o.kind, temporary.path()));
+  {
+    TerminalProgress progress(o.quiet);
+    STRAHLER_RETURN_IF_ERROR(renderInOrder(service, o, ids, *sink, progress));
+  }
+  STRAHLER_RETURN_IF_ERROR(sink->finish(metadata));
+  stats = sink->stats();
+  if (gSignal.load() != 0) // arrived while the indexes were written
+    return makeError(ErrorCode::kInternal, "interrupted");
+  return temporary.commit();
+}
+
 /// Dies by `signal` as if never caught (the shell sees 128 + signal); returns if it cannot.
 int dieBy(int signal) {
   std::signal(signal, SIG_DFL);
   std::raise(signal);
   return 128 + signal;
+}
+
+/// Prints the summary line on stderr.
+void printSummary(const ExportOptions& o, const archive::ArchiveStats& stats, double seconds) {
+  std::error_code ec;
+  const auto bytes = fs::file_size(o.output, ec);
+  std::fprintf(stderr,
+               "exported %llu tiles (%llu unique) to %s: %llu bytes in %.1f s, %.0f tiles/s "
+               "(%d threads)\n",
+               static_cast<unsigned long long>(stats.tiles),
+               static_cast<unsigned long long>(stats.uniqueTiles), o.output.c_str(),
+               static_cast<unsigned long long>(ec ? 0 : bytes), seconds,
+               static_cast<double>(stats.tiles) / std::max(seconds, 1e-9), o.threads);
+}
+
+/// Exports `world` as `o` asks; returns the exit code (or dies by an interrupting signal).
+int exportWorld(const ExportOptions& o, construction::WorldData world) {
+  const LonLatBox bounds = worldBounds(world);
+  const std::optional<LonLatBox> box = o.bbox ? intersect(*o.bbox, bounds) : bounds;
+  if (!box)
+    return usageError({ErrorCode::kInvalidInput, "--bbox " + describe(*o.bbox) +
+                                                     " does not overlap the world (bounds " +
+                                                     describe(bounds) + ")"},
+                      kExportUsage);
+  const std::vector<TileRect> rects = tileRects(*box, o.zooms.first, o.zooms.second);
+  if (const std::uint64_t count = countTiles(rects); count > o.maxTiles)
+    return fail(makeError(
+        ErrorCode::kLimitExceeded,
+        "zooms " + std::to_string(o.zooms.first) + "-" + std::to_string(o.zooms.second) +
+            " of this world are " + std::to_string(count) + " tiles, more than --max-tiles " +
+            std::to_string(o.maxTiles) + ": lower the last zoom, give a smaller --bbox, or " +
+            "raise --max-tiles if you mean it"));
+
+  const auto start = Clock::now();
+  const archive::ArchiveMetadata metadata = metadataFor(world, o, *box);
+  const TileService service(std::move(world));
+  const std::vector<std::uint64_t> ids = hilbertOrder(rects);
+  gSignal.store(0);
+  const SignalCatcher catcher;
+  TemporaryOutput temporary(o.output);
+  archive::ArchiveStats stats;
+  base::Status status = base::Ok{};
+  try {
+    status = writeArchive(service, o, ids, metadata, temporary, stats);
+  } catch (const std::exception& e) { // never leave without removing the temporary file
+    status = makeError(ErrorCode::kInternal, std::string("export failed: ") + e.what());
+  }
+  if (const int signal = gSignal.load(); signal != 0 && !status) {
+    std::fprintf(stderr, "strahler: interrupted by %s: no archive written\n",
+                 signal == SIGINT ? "SIGINT" : "SIGTERM");
+    temporary.discard();
+    return dieBy(signal);
+  }
+  if (!status)
+    return fail(status.error());
+  if (!o.quiet)
+    printSummary(o, stats, std::chrono::duration<double>(Clock::now() - start).count());
+  return 0;
 }
 
 } // namespace
@@ -382,69 +404,12 @@ int runExport(const std::vector<std::string>& raw) {
   auto options = parseOptions(args);
   if (!options)
     return usageError(options.error(), kExportUsage);
-  const ExportOptions& o = options.value();
-  if (auto writable = checkWritable(o.output); !writable)
+  if (auto writable = checkWritable(options.value().output); !writable)
     return fail(writable.error());
   auto world = store::readWorldFile(args.positional()[0]);
   if (!world)
     return fail(world.error());
-  const LonLatBox bounds = worldBounds(world.value());
-  const std::optional<LonLatBox> box = o.bbox ? intersect(*o.bbox, bounds) : bounds;
-  if (!box)
-    return usageError({ErrorCode::kInvalidInput, "--bbox " + describe(*o.bbox) +
-                                                     " does not overlap the world (bounds " +
-                                                     describe(bounds) + ")"},
-                      kExportUsage);
-  const std::vector<TileRect> rects = tileRects(*box, o.zooms.first, o.zooms.second);
-  if (const std::uint64_t count = countTiles(rects); count > o.maxTiles)
-    return fail(makeError(
-        ErrorCode::kLimitExceeded,
-        "zooms " + std::to_string(o.zooms.first) + "-" + std::to_string(o.zooms.second) +
-            " of this world are " + std::to_string(count) + " tiles, more than --max-tiles " +
-            std::to_string(o.maxTiles) + ": lower the last zoom, give a smaller --bbox, or " +
-            "raise --max-tiles if you mean it"));
-
-  const auto start = Clock::now();
-  const archive::ArchiveMetadata metadata = metadataFor(world.value(), o, *box);
-  const TileService service(std::move(world).value());
-  const std::vector<std::uint64_t> ids = hilbertOrder(rects);
-  gSignal.store(0);
-  const SignalCatcher catcher;
-  TemporaryOutput temporary(o.output);
-  archive::ArchiveStats stats;
-  base::Status status = [&]() -> base::Status {
-    STRAHLER_ASSIGN_OR_RETURN(auto sink, openSink(o.kind, temporary.path()));
-    {
-      TerminalProgress progress(o.quiet);
-      STRAHLER_RETURN_IF_ERROR(renderInOrder(service, o, ids, *sink, progress));
-    }
-    STRAHLER_RETURN_IF_ERROR(sink->finish(metadata));
-    stats = sink->stats();
-    if (gSignal.load() != 0)
-      return makeError(ErrorCode::kInternal, "interrupted");
-    return temporary.commit();
-  }();
-  if (const int signal = gSignal.load(); signal != 0 && !status) {
-    std::fprintf(stderr, "strahler: interrupted by %s: no archive written\n",
-                 signal == SIGINT ? "SIGINT" : "SIGTERM");
-    temporary.discard();
-    return dieBy(signal);
-  }
-  if (!status)
-    return fail(status.error());
-  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  if (!o.quiet) {
-    std::error_code ec;
-    const auto bytes = fs::file_size(o.output, ec);
-    std::fprintf(stderr,
-                 "exported %llu tiles (%llu unique) to %s: %llu bytes in %.1f s, %.0f tiles/s "
-                 "(%d threads)\n",
-                 static_cast<unsigned long long>(stats.tiles),
-                 static_cast<unsigned long long>(stats.uniqueTiles), o.output.c_str(),
-                 static_cast<unsigned long long>(ec ? 0 : bytes), seconds,
-                 static_cast<double>(stats.tiles) / std::max(seconds, 1e-9), o.threads);
-  }
-  return 0;
+  return exportWorld(options.value(), std::move(world).value());
 }
 
 } // namespace strahler::app
