@@ -293,7 +293,8 @@ archive::ArchiveMetadata metadataFor(const construction::WorldData& world, const
   m.extra = {{"generator", "strahler " STRAHLER_VERSION},
              {"generatorVersion", world.generatorVersion},
              {"worldId", world.cacheKey},
-             {"seed", std::to_string(world.params.seed)}};
+             {"seed", std::to_string(world.params.seed)},
+             {"areaKm2", std::to_string(std::llround(world.areaKm2()))}};
   return m;
 }
 

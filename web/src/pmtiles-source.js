@@ -32,6 +32,7 @@ export async function archiveWorlds(maplibregl, url) {
   const world = {
     id: metadata?.worldId ?? 'archive',
     name: metadata?.name ?? url,
+    areaKm2: metadata?.areaKm2, // the world's land, as `strahler export` records it
     bounds: [header.minLon, header.minLat, header.maxLon, header.maxLat],
     demSource,
     riversData: NO_RIVERS,

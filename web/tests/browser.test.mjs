@@ -182,7 +182,7 @@ describe('map viewer over a PMTiles archive (?pmtiles=URL, any static server)', 
     assert.ok(state.loaded, 'the archive sources are not loaded');
     assert.equal(state.hillshade, 'hillshade');
     assert.ok(Number.isFinite(state.elevation), `no terrain elevation at the centre: ${state.elevation}`);
-    assert.match(state.info, /^default/);
+    assert.match(state.info, /^default · \d+ km²/, 'the name and land area from the archive metadata');
     assertNotBlank(await page.locator('#map canvas').screenshot(), 'the map canvas');
     writeFileSync(join(SCREENSHOTS, 'viewer-pmtiles.png'), await page.screenshot());
   });
