@@ -12,6 +12,9 @@ packages=(
   libopenimageio-dev
   libspng-dev libdraco-dev libeigen3-dev
   nlohmann-json3-dev
+  libsqlite3-dev sqlite3
+  # python3: tests/cli/check_mbtiles.py reads MBTiles with its sqlite3 module
+  python3
   libprotobuf-dev protobuf-compiler
   googletest libgtest-dev libbenchmark-dev
   # clang and its runtimes (libFuzzer, sanitizers) for the fuzz harnesses: scripts/fuzz.sh

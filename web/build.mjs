@@ -1,6 +1,6 @@
 // Builds web/dist without a bundler: our pages and ES modules are copied as they are, and
 // the vendor modules they import are copied next to them. The import maps in index.html and
-// game.html resolve the bare names ("maplibre-gl", "three", "three/addons/") to these copies,
+// game.html resolve the bare names ("maplibre-gl", "pmtiles", "three", "three/addons/") to these copies,
 // so the pages work offline from any static file server, including `strahler serve`.
 import { cpSync, existsSync, mkdirSync, readFileSync, rmSync, copyFileSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
@@ -42,6 +42,11 @@ const maplibre = join(modules, 'maplibre-gl', 'dist');
 for (const file of ['maplibre-gl.mjs', 'maplibre-gl-worker.mjs', 'maplibre-gl.css']) {
   copy(join(maplibre, file), join(dist, 'vendor', 'maplibre-gl', file));
 }
+
+// pmtiles (?pmtiles=URL in the viewer: src/pmtiles-source.js) and fflate, the one module it
+// imports (bare 'fflate', resolved by the import map); both are single-file ES modules.
+copy(join(modules, 'pmtiles', 'dist', 'esm', 'index.js'), join(dist, 'vendor', 'pmtiles', 'index.js'));
+copy(join(modules, 'fflate', 'esm', 'browser.js'), join(dist, 'vendor', 'fflate', 'browser.js'));
 
 // three.js core, the glTF + Draco loaders (and what they import), and the Draco decoder
 // (the glTF variant: it decodes only what KHR_draco_mesh_compression needs, so it is smaller).

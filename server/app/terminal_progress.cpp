@@ -31,6 +31,20 @@ void TerminalProgress::report(std::string_view stage, double fraction) {
   std::fflush(stderr);
 }
 
+void TerminalProgress::update(std::string_view stage, double fraction, std::string_view detail) {
+  if (!enabled_)
+    return;
+  if (stage != stage_) {
+    endLine();
+    stage_ = stage;
+  }
+  lastPercent_ = static_cast<int>(fraction * 100.0);
+  // \x1b[K clears what a longer previous line left.
+  std::fprintf(stderr, "\r  %-10s %3d%% %.*s\x1b[K", stage_.c_str(), lastPercent_,
+               static_cast<int>(detail.size()), detail.data());
+  std::fflush(stderr);
+}
+
 void TerminalProgress::endLine() {
   if (enabled_ && !stage_.empty())
     std::fputc('\n', stderr);

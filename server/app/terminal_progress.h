@@ -16,6 +16,10 @@ public:
 
   /// The callback to hand to the pipeline.
   base::ProgressCallback callback();
+  /// Shows `stage` at `fraction` (0..1) followed by `detail` (counts, ETA); callers throttle.
+  void update(std::string_view stage, double fraction, std::string_view detail);
+  /// True when it prints at all.
+  bool enabled() const noexcept { return enabled_; }
 
 private:
   void report(std::string_view stage, double fraction);

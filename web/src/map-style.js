@@ -24,15 +24,16 @@ function riverWidth(scale) {
 }
 
 export function worldStyle(world, exaggeration) {
-  const tilejson = worldUrl(world, 'tilejson.json');
+  // A world read from a static archive (pmtiles-source.js) brings its own source, no rivers.
+  const dem = world.demSource ?? { type: 'raster-dem', url: worldUrl(world, 'tilejson.json'), tileSize: 256 };
   return {
     version: 8,
     // Two sources of the same tiles: MapLibre renders 3D terrain and hillshade better when they
     // do not share one (and warns otherwise). The second fetch is served by the HTTP cache.
     sources: {
-      [TERRAIN_SOURCE]: { type: 'raster-dem', url: tilejson, tileSize: 256 },
-      shade: { type: 'raster-dem', url: tilejson, tileSize: 256 },
-      rivers: { type: 'geojson', data: worldUrl(world, 'rivers.geojson') },
+      [TERRAIN_SOURCE]: { ...dem },
+      shade: { ...dem },
+      rivers: { type: 'geojson', data: world.riversData ?? worldUrl(world, 'rivers.geojson') },
     },
     terrain: { source: TERRAIN_SOURCE, exaggeration },
     layers: [

@@ -5,6 +5,7 @@ import * as maplibregl from 'maplibre-gl';
 import { loadWorlds, rememberWorld } from './api.js';
 import { ROSGEN_COLOURS, TERRAIN_SOURCE, worldStyle } from './map-style.js';
 import { describePoint } from './point-info.js';
+import { archiveWorlds, pmtilesArchiveUrl } from './pmtiles-source.js';
 import { TileTimings, registerTimedProtocol, showTimings, timedUrl } from './tile-timing.js';
 
 const $ = (id) => document.getElementById(id);
@@ -45,7 +46,8 @@ function setupExaggeration(map) {
 }
 
 async function main() {
-  const { worlds, selected } = await loadWorlds();
+  const archive = pmtilesArchiveUrl(); // ?pmtiles=URL: a static archive instead of the server
+  const { worlds, selected } = archive ? await archiveWorlds(maplibregl, archive) : await loadWorlds();
   const timings = new TileTimings();
   registerTimedProtocol(maplibregl, timings);
   showTimings($('timings'), timings);
@@ -78,7 +80,7 @@ async function main() {
   const currentExaggeration = setupExaggeration(map);
   const showWorld = (world) => {
     $('world-info').textContent = describeWorld(world);
-    rememberWorld(world);
+    if (!archive) rememberWorld(world);
   };
   showWorld(selected);
   setupWorldPicker(worlds, selected, (world) => {

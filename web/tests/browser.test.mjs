@@ -1,16 +1,18 @@
 // The map viewer and the game client in a real browser (Debian's chromium, SwiftShader WebGL2)
 // against a real `strahler serve`. Screenshots go to web/tests/screenshots/.
 import assert from 'node:assert/strict';
-import { mkdirSync, writeFileSync } from 'node:fs';
+import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { after, before, describe, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
 import { launchBrowser, openPage } from './lib/browser.mjs';
 import { pixelStats } from './lib/pixels.mjs';
+import { exportDefaultWorld } from './lib/archive.mjs';
 import { startServer } from './lib/server.mjs';
+import { startStaticServer } from './lib/static-server.mjs';
 
 const SCREENSHOTS = join(dirname(fileURLToPath(import.meta.url)), 'screenshots');
-const TOTAL_MS = 170_000; // the whole file, server start to browser close, stays under 3 minutes
+const TOTAL_MS = 200_000; // the whole file, server start to browser close, stays under 3.5 minutes
 const STEP_MS = 60_000;   // any one wait in a page
 
 // A blank or single-colour canvas has a luminance spread near 0 and a handful of colours.
@@ -20,15 +22,26 @@ function assertNotBlank(png, what) {
 }
 
 // No console error, no HTTP error, and nothing fetched from anywhere but our server (offline).
-function assertNoErrors(record) {
+function assertNoErrors(record, origin = server.url) {
   assert.deepEqual(record.errors, [], 'console errors, exceptions or failed requests');
   const bad = record.responses.filter((r) => r.status >= 400);
   assert.deepEqual(bad, [], 'HTTP error responses');
-  const foreign = record.responses.filter((r) => /^https?:/.test(r.url) && !r.url.startsWith(`${server.url}/`));
+  const foreign = record.responses.filter((r) => /^https?:/.test(r.url) && !r.url.startsWith(`${origin}/`));
   assert.deepEqual(foreign, [], 'requests to other servers');
 }
 
 let server, browser;
+
+// Waits for window.strahlerMap, then until it is idle: style and every tile loaded, no transition.
+async function waitForIdleMap(page) {
+  await page.waitForFunction(() => window.strahlerMap, null, { timeout: STEP_MS });
+  await page.evaluate((ms) => new Promise((resolve, reject) => {
+    const map = window.strahlerMap;
+    setTimeout(() => reject(new Error('the map never became idle')), ms);
+    if (map.loaded() && map.areTilesLoaded() && !map.isMoving()) resolve();
+    else map.once('idle', resolve);
+  }), STEP_MS);
+}
 const watchdog = setTimeout(() => {
   console.error(`browser tests exceeded ${TOTAL_MS} ms`);
   process.exit(1); // the server is killed by its exit hook, chromium when its pipe closes
@@ -52,14 +65,7 @@ describe('map viewer', () => {
 
   before(async () => {
     ({ page, record } = await openPage(browser, `${server.url}/`));
-    await page.waitForFunction(() => window.strahlerMap, null, { timeout: STEP_MS });
-    // Idle: style and every tile loaded, no transition running.
-    await page.evaluate((ms) => new Promise((resolve, reject) => {
-      const map = window.strahlerMap;
-      setTimeout(() => reject(new Error('the map never became idle')), ms);
-      if (map.loaded() && map.areTilesLoaded() && !map.isMoving()) resolve();
-      else map.once('idle', resolve);
-    }), STEP_MS);
+    await waitForIdleMap(page);
   }, { timeout: 2 * STEP_MS });
 
   after(() => page?.close());
@@ -155,6 +161,58 @@ describe('map viewer camera in the URL', () => {
     const [, hashLat, hashLon] = url.hash.slice(1).split('/').map(Number);
     assert.ok(Math.abs(hashLat - (lat - 0.01)) < 1e-3 && Math.abs(hashLon - (lon + 0.01)) < 1e-3, url.hash);
     assert.deepEqual(record.errors, [], 'console errors, exceptions or failed requests');
+  });
+});
+
+describe('map viewer over a PMTiles archive (?pmtiles=URL, any static server)', () => {
+  let page, record, archive, files;
+
+  before(async () => {
+    archive = exportDefaultWorld('0-12');
+    // The pages and the archive from one plain static server with Range support: no strahler.
+    const webRoot = join(dirname(fileURLToPath(import.meta.url)), '..', 'dist');
+    files = await startStaticServer([webRoot, archive.dir]);
+    ({ page, record } = await openPage(browser, `${files.url}/?pmtiles=${archive.file}`));
+    await waitForIdleMap(page);
+  }, { timeout: 2 * STEP_MS });
+
+  after(async () => {
+    await page?.close();
+    await files?.stop();
+    if (archive) rmSync(archive.dir, { recursive: true, force: true });
+  });
+
+  test('reads its tiles from the archive by byte ranges, without errors', () => {
+    assertNoErrors(record, files.url);
+    const ranges = record.responses.filter((r) => r.url.endsWith(`/${archive.file}`));
+    assert.ok(ranges.length >= 3, `header, directory and tiles come by range requests: ${ranges.length}`);
+    for (const r of ranges) assert.equal(r.status, 206, r.url);
+    assert.equal(record.responses.filter((r) => /\/worlds/.test(r.url)).length, 0, 'asked a strahler server');
+  });
+
+  test('shows the archive as terrain and hillshade with elevations', async () => {
+    const state = await page.evaluate(() => {
+      const map = window.strahlerMap;
+      const centre = map.getCenter();
+      return {
+        terrain: map.getTerrain()?.source,
+        dem: map.getSource('terrain-dem')?.url,
+        encoding: map.getSource('shade')?.encoding,
+        loaded: map.isSourceLoaded('shade') && map.isSourceLoaded('terrain-dem'),
+        hillshade: map.getLayer('hillshade')?.type,
+        elevation: map.queryTerrainElevation(centre),
+        info: document.getElementById('world-info').textContent,
+      };
+    });
+    assert.equal(state.terrain, 'terrain-dem');
+    assert.match(state.dem, /^pmtiles:\/\/http:\/\/127\.0\.0\.1:\d+\/island\.pmtiles$/);
+    assert.equal(state.encoding, 'mapbox');
+    assert.ok(state.loaded, 'the archive sources are not loaded');
+    assert.equal(state.hillshade, 'hillshade');
+    assert.ok(Number.isFinite(state.elevation), `no terrain elevation at the centre: ${state.elevation}`);
+    assert.match(state.info, /^default · \d+ km²/, 'the name and land area from the archive metadata');
+    assertNotBlank(await page.locator('#map canvas').screenshot(), 'the map canvas');
+    writeFileSync(join(SCREENSHOTS, 'viewer-pmtiles.png'), await page.screenshot());
   });
 });
 

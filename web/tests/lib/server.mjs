@@ -9,6 +9,13 @@ import { fileURLToPath } from 'node:url';
 const repoRoot = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..', '..');
 const STARTUP_MS = 60_000; // includes generating the default world when the cache is cold
 
+/** The strahler program the tests run: $STRAHLER_BIN, else build/release/bin/strahler. */
+export function strahlerBinary() {
+  const binary = process.env.STRAHLER_BIN ?? join(repoRoot, 'build', 'release', 'bin', 'strahler');
+  if (!existsSync(binary)) throw new Error(`${binary} is missing: build it first (scripts/build.sh release)`);
+  return binary;
+}
+
 /**
  * Resolves to { url, stop() }. STRAHLER_TEST_SERVER=http://host:port tests a server that is
  * already running instead; STRAHLER_BIN overrides the program (default build/release/bin/strahler).
@@ -17,8 +24,7 @@ export async function startServer() {
   if (process.env.STRAHLER_TEST_SERVER) {
     return { url: process.env.STRAHLER_TEST_SERVER.replace(/\/$/, ''), stop: async () => {} };
   }
-  const binary = process.env.STRAHLER_BIN ?? join(repoRoot, 'build', 'release', 'bin', 'strahler');
-  if (!existsSync(binary)) throw new Error(`${binary} is missing: build it first (scripts/build.sh release)`);
+  const binary = strahlerBinary();
   const webRoot = join(repoRoot, 'web', 'dist');
   if (!existsSync(join(webRoot, 'index.html'))) throw new Error(`${webRoot} is missing: run \`npm run build --prefix web\``);
 

@@ -1,0 +1,416 @@
+#include "export_command.h"
+
+#include "cli_args.h"
+#include "command_support.h"
+#include "export_plan.h"
+#include "hilbert_tile_id.h"
+#include "mbtiles_writer.h"
+#include "ordered_renderer.h"
+#include "pmtiles_writer.h"
+#include "terminal_progress.h"
+#include "tile_service.h"
+
+#include "strahler/store/world_file.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <csignal>
+#include <cstdio>
+#include <fcntl.h>
+#include <filesystem>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <unistd.h>
+
+namespace strahler::app {
+namespace {
+
+using base::ErrorCode;
+using base::makeError;
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+constexpr const char* kExportUsage =
+    "usage: strahler export WORLD.world --zooms A-B -o FILE.pmtiles|FILE.mbtiles\n"
+    "                       [--format pmtiles|mbtiles] [--scheme web] [--bbox W,S,E,N]\n"
+    "                       [--tile png|terrarium|png16] [--size N] [--threads N]\n"
+    "                       [--max-tiles N] [--quiet]\n"
+    "Writes every Web Mercator tile of the world in zooms A..B (0..18) that touches its bounds\n"
+    "(and --bbox, degrees) to a PMTiles v3 or MBTiles 1.3 archive, byte for byte the tiles\n"
+    "`strahler serve` sends. --format defaults to the extension of FILE. png is Terrain-RGB\n"
+    "(the default); N: pixels per side, 16..1024, default 256. --threads: default all cores;\n"
+    "the archive is the same for any count. Identical tiles (the open sea) are stored once.\n"
+    "More than --max-tiles tiles (default 5000000) are refused. The archive is written to\n"
+    "FILE.tmp.PID and renamed when complete; on an error or SIGINT/SIGTERM nothing is left.\n";
+
+constexpr std::uint64_t kDefaultMaxTiles = 5'000'000;
+
+enum class ArchiveKind { kPmtiles, kMbtiles };
+
+/// What the command line asked for.
+struct ExportOptions {
+  ArchiveKind kind = ArchiveKind::kPmtiles;
+  TileFormat tile = TileFormat::kTerrainRgb;
+  int size = TileSizes::kRasterDefault;
+  int threads = 1;
+  std::uint64_t maxTiles = kDefaultMaxTiles;
+  std::pair<int, int> zooms;
+  std::optional<LonLatBox> bbox;
+  std::string output;
+  bool quiet = false;
+};
+
+base::Result<ArchiveKind> archiveKind(const CliArgs& args, const std::string& output) {
+  std::string name = args.get("--format").value_or("");
+  if (name.empty()) {
+    if (endsWith(output, ".pmtiles"))
+      return ArchiveKind::kPmtiles;
+    if (endsWith(output, ".mbtiles"))
+      return ArchiveKind::kMbtiles;
+    return makeError(ErrorCode::kInvalidInput,
+                     "cannot tell the archive format from '" + output +
+                         "': give --format pmtiles|mbtiles or a .pmtiles/.mbtiles name");
+  }
+  if (name == "pmtiles")
+    return ArchiveKind::kPmtiles;
+  if (name == "mbtiles")
+    return ArchiveKind::kMbtiles;
+  return makeError(ErrorCode::kInvalidInput,
+                   "unknown archive format '" + name + "' (use pmtiles or mbtiles)");
+}
+
+base::Result<TileFormat> archiveTileFormat(const std::string& name) {
+  STRAHLER_ASSIGN_OR_RETURN(const TileFormat f, parseTileFormat(name));
+  if (f != TileFormat::kTerrainRgb && f != TileFormat::kTerrarium && f != TileFormat::kPng16)
+    return makeError(
+        ErrorCode::kInvalidInput,
+        "--tile " + name +
+            ": archives hold PNG tiles here: use png (Terrain-RGB), terrarium or png16");
+  return f;
+}
+
+base::Result<ExportOptions> parseOptions(const CliArgs& args) {
+  ExportOptions o;
+  if (args.positional().size() != 1)
+    return makeError(ErrorCode::kInvalidInput, "expected exactly one WORLD file");
+  for (const char* required : {"--zooms", "-o"})
+    if (!args.get(required))
+      return makeError(ErrorCode::kInvalidInput, std::string("missing ") + required);
+  o.output = *args.get("-o");
+  o.quiet = args.has("--quiet");
+  if (const std::string scheme = args.get("--scheme").value_or("web"); scheme != "web")
+    return makeError(ErrorCode::kInvalidInput,
+                     "--scheme " + scheme + ": archives hold Web Mercator tiles: use web");
+  STRAHLER_ASSIGN_OR_RETURN(o.kind, archiveKind(args, o.output));
+  STRAHLER_ASSIGN_OR_RETURN(o.tile, archiveTileFormat(args.get("--tile").value_or("png")));
+  STRAHLER_ASSIGN_OR_RETURN(o.zooms,
+                            parseZoomRange(*args.get("--zooms"), tiling::TileScheme::kMaxWebZoom));
+  if (const auto bbox = args.get("--bbox")) {
+    STRAHLER_ASSIGN_OR_RETURN(o.bbox, parseBbox(*bbox));
+  }
+  STRAHLER_ASSIGN_OR_RETURN(const auto size,
+                            args.getInt("--size", TileSizes::kRasterMin, TileSizes::kRasterMax));
+  o.size = static_cast<int>(size.value_or(TileSizes::kRasterDefault));
+  STRAHLER_ASSIGN_OR_RETURN(const auto threads, args.getInt("--threads", 1, 256));
+  o.threads = static_cast<int>(
+      threads.value_or(static_cast<long long>(std::max(1u, std::thread::hardware_concurrency()))));
+  STRAHLER_ASSIGN_OR_RETURN(const auto maxTiles, args.getInt("--max-tiles", 1, 1ll << 40));
+  o.maxTiles = static_cast<std::uint64_t>(maxTiles.value_or(kDefaultMaxTiles));
+  return o;
+}
+
+/// kIoError naming `output` when its folder is missing or not writable, or it is a folder.
+base::Status checkWritable(const std::string& output) {
+  const fs::path path(output);
+  const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    return makeError(ErrorCode::kIoError, "cannot write '" + output + "': it is a folder");
+  if (!fs::is_directory(folder, ec))
+    return makeError(ErrorCode::kIoError,
+                     "cannot write '" + output + "': no folder '" + folder.string() + "'");
+  if (::access(folder.c_str(), W_OK) != 0)
+    return makeError(ErrorCode::kIoError, "cannot write '" + output + "': folder '" +
+                                              folder.string() + "' is not writable");
+  return base::Ok{};
+}
+
+// --- Interruption -----------------------------------------------------------------------------
+
+std::atomic<int> gSignal{0};
+
+extern "C" void noteSignal(int signal) {
+  gSignal.store(signal);
+}
+
+/// While alive, SIGINT and SIGTERM only set gSignal (the export stops at the next tile and
+/// cleans up); the previous handlers come back after.
+class SignalCatcher {
+public:
+  SignalCatcher() {
+    struct sigaction action = {};
+    action.sa_handler = noteSignal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &oldInt_);
+    sigaction(SIGTERM, &action, &oldTerm_);
+  }
+  ~SignalCatcher() {
+    sigaction(SIGINT, &oldInt_, nullptr);
+    sigaction(SIGTERM, &oldTerm_, nullptr);
+  }
+  SignalCatcher(const SignalCatcher&) = delete;
+  SignalCatcher& operator=(const SignalCatcher&) = delete;
+
+private:
+  struct sigaction oldInt_ = {};
+  struct sigaction oldTerm_ = {};
+};
+
+/// FILE.tmp.PID beside FILE: removed when destroyed unless commit() renamed it to FILE.
+class TemporaryOutput {
+public:
+  explicit TemporaryOutput(std::string final)
+      : final_(std::move(final)), path_(final_ + ".tmp." + std::to_string(::getpid())) {
+    std::error_code ignored;
+    fs::remove(path_, ignored);
+  }
+  ~TemporaryOutput() { discard(); }
+  TemporaryOutput(const TemporaryOutput&) = delete;
+  TemporaryOutput& operator=(const TemporaryOutput&) = delete;
+
+  const std::string& path() const noexcept { return path_; }
+  base::Status commit() {
+    // The data reaches the disk before the name does (SQLite runs with synchronous = OFF).
+    if (const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC); fd >= 0) {
+      ::fsync(fd);
+      ::close(fd);
+    }
+    std::error_code ec;
+    fs::rename(path_, final_, ec);
+    if (ec)
+      return makeError(ErrorCode::kIoError, "cannot write '" + final_ + "': " + ec.message());
+    committed_ = true;
+    return base::Ok{};
+  }
+  /// Removes the file now (before dying by a signal, when no destructor runs).
+  void discard() {
+    if (committed_)
+      return;
+    std::error_code ignored;
+    fs::remove(path_, ignored);
+    committed_ = true;
+  }
+
+private:
+  std::string final_;
+  std::string path_;
+  bool committed_ = false;
+};
+
+// --- Rendering --------------------------------------------------------------------------------
+
+std::string formatSeconds(double s) {
+  char text[32];
+  if (s < 60)
+    std::snprintf(text, sizeof text, "%.0fs", s);
+  else if (s < 3600)
+    std::snprintf(text, sizeof text, "%dm%02ds", static_cast<int>(s / 60),
+                  static_cast<int>(s) % 60);
+  else
+    std::snprintf(text, sizeof text, "%dh%02dm", static_cast<int>(s / 3600),
+                  static_cast<int>(s / 60) % 60);
+  return text;
+}
+
+/// Shows progress with an ETA at most every 200 ms.
+void showProgress(TerminalProgress& progress, std::size_t done, std::size_t total,
+                  Clock::time_point start, Clock::time_point& last) {
+  const auto now = Clock::now();
+  if (!progress.enabled() || now - last < std::chrono::milliseconds(200))
+    return;
+  last = now;
+  const double elapsed = std::chrono::duration<double>(now - start).count();
+  const double fraction = static_cast<double>(done) / static_cast<double>(total);
+  progress.update("export", fraction,
+                  std::to_string(done) + "/" + std::to_string(total) + " tiles, ETA " +
+                      formatSeconds(elapsed / fraction * (1.0 - fraction)));
+}
+
+/// Renders the tiles `ids` and hands them to `sink` in that order. Stops early, with kInternal
+/// "interrupted", when SIGINT or SIGTERM arrives.
+base::Status renderInOrder(const TileService& service, const ExportOptions& options,
+                           const std::vector<std::uint64_t>& ids, archive::TileArchiveSink& sink,
+                           TerminalProgress& progress) {
+  OrderedRenderer renderer(service, {options.tile, options.size, options.threads}, ids);
+  const auto start = Clock::now();
+  auto last = start - std::chrono::seconds(1);
+  for (std::size_t written = 0; written < ids.size();) {
+    if (gSignal.load() != 0)
+      return makeError(ErrorCode::kInternal, "interrupted");
+    std::optional<std::string> bytes = renderer.take(std::chrono::milliseconds(100));
+    if (!bytes) {
+      if (auto failure = renderer.failure())
+        return *failure;
+      continue;
+    }
+    STRAHLER_RETURN_IF_ERROR(sink.addTile(archive::tileIdToZxy(ids[written]), *bytes));
+    showProgress(progress, ++written, ids.size(), start, last);
+  }
+  progress.update("export", 1.0, std::to_string(ids.size()) + " tiles");
+  return base::Ok{};
+}
+
+archive::ArchiveMetadata metadataFor(const construction::WorldData& world, const ExportOptions& o,
+                                     const LonLatBox& box) {
+  archive::ArchiveMetadata m;
+  m.name = world.name;
+  m.tileFormat = "png";
+  m.tileSize = o.size;
+  m.minZoom = o.zooms.first;
+  m.maxZoom = o.zooms.second;
+  m.west = box.west, m.south = box.south, m.east = box.east, m.north = box.north;
+  m.centerLon = (box.west + box.east) / 2;
+  m.centerLat = (box.south + box.north) / 2;
+  m.centerZoom = std::clamp(9, o.zooms.first, o.zooms.second);
+  m.version = "1.0.0";
+  m.attribution = "strahler";
+  switch (o.tile) {
+  case TileFormat::kTerrarium:
+    m.encoding = "terrarium";
+    m.description = "strahler terrain (Terrarium heightmap)";
+    break;
+  case TileFormat::kPng16:
+    m.description = "strahler terrain (16-bit grey PNG: height = value * 0.1 - 1000 m)";
+    break;
+  default:
+    m.encoding = "mapbox";
+    m.description = "strahler terrain (Terrain-RGB heightmap)";
+  }
+  m.extra = {{"generator", "strahler " STRAHLER_VERSION},
+             {"generatorVersion", world.generatorVersion},
+             {"worldId", world.cacheKey},
+             {"seed", std::to_string(world.params.seed)},
+             {"areaKm2", std::to_string(std::llround(world.areaKm2()))}};
+  return m;
+}
+
+base::Result<std::unique_ptr<archive::TileArchiveSink>> openSink(ArchiveKind kind,
+                                                                 const std::string& path) {
+  if (kind == ArchiveKind::kMbtiles) {
+    STRAHLER_ASSIGN_OR_RETURN(auto w, archive::MbtilesWriter::create(path));
+    return std::unique_ptr<archive::TileArchiveSink>(std::move(w));
+  }
+  STRAHLER_ASSIGN_OR_RETURN(auto w, archive::PmtilesWriter::create(path));
+  return std::unique_ptr<archive::TileArchiveSink>(std::move(w));
+}
+
+/// Renders every tile into the archive at `temporary` and renames it to its final name.
+base::Status writeArchive(const TileService& service, const ExportOptions& o,
+                          const std::vector<std::uint64_t>& ids,
+                          const archive::ArchiveMetadata& metadata, TemporaryOutput& temporary,
+                          archive::ArchiveStats& stats) {
+  STRAHLER_ASSIGN_OR_RETURN(auto sink, openSink(o.kind, temporary.path()));
+  {
+    TerminalProgress progress(o.quiet);
+    STRAHLER_RETURN_IF_ERROR(renderInOrder(service, o, ids, *sink, progress));
+  }
+  STRAHLER_RETURN_IF_ERROR(sink->finish(metadata));
+  stats = sink->stats();
+  if (gSignal.load() != 0) // arrived while the indexes were written
+    return makeError(ErrorCode::kInternal, "interrupted");
+  return temporary.commit();
+}
+
+/// Dies by `signal` as if never caught (the shell sees 128 + signal); returns if it cannot.
+int dieBy(int signal) {
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+  return 128 + signal;
+}
+
+/// Prints the summary line on stderr.
+void printSummary(const ExportOptions& o, const archive::ArchiveStats& stats, double seconds) {
+  std::error_code ec;
+  const auto bytes = fs::file_size(o.output, ec);
+  std::fprintf(stderr,
+               "exported %llu tiles (%llu unique) to %s: %llu bytes in %.1f s, %.0f tiles/s "
+               "(%d threads)\n",
+               static_cast<unsigned long long>(stats.tiles),
+               static_cast<unsigned long long>(stats.uniqueTiles), o.output.c_str(),
+               static_cast<unsigned long long>(ec ? 0 : bytes), seconds,
+               static_cast<double>(stats.tiles) / std::max(seconds, 1e-9), o.threads);
+}
+
+/// Exports `world` as `o` asks; returns the exit code (or dies by an interrupting signal).
+int exportWorld(const ExportOptions& o, construction::WorldData world) {
+  const LonLatBox bounds = worldBounds(world);
+  const std::optional<LonLatBox> box = o.bbox ? intersect(*o.bbox, bounds) : bounds;
+  if (!box)
+    return usageError({ErrorCode::kInvalidInput, "--bbox " + describe(*o.bbox) +
+                                                     " does not overlap the world (bounds " +
+                                                     describe(bounds) + ")"},
+                      kExportUsage);
+  const std::vector<TileRect> rects = tileRects(*box, o.zooms.first, o.zooms.second);
+  if (const std::uint64_t count = countTiles(rects); count > o.maxTiles)
+    return fail(makeError(
+        ErrorCode::kLimitExceeded,
+        "zooms " + std::to_string(o.zooms.first) + "-" + std::to_string(o.zooms.second) +
+            " of this world are " + std::to_string(count) + " tiles, more than --max-tiles " +
+            std::to_string(o.maxTiles) + ": lower the last zoom, give a smaller --bbox, or " +
+            "raise --max-tiles if you mean it"));
+
+  const auto start = Clock::now();
+  const archive::ArchiveMetadata metadata = metadataFor(world, o, *box);
+  const TileService service(std::move(world));
+  const std::vector<std::uint64_t> ids = hilbertOrder(rects);
+  gSignal.store(0);
+  const SignalCatcher catcher;
+  TemporaryOutput temporary(o.output);
+  archive::ArchiveStats stats;
+  base::Status status = base::Ok{};
+  try {
+    status = writeArchive(service, o, ids, metadata, temporary, stats);
+  } catch (const std::exception& e) { // never leave without removing the temporary file
+    status = makeError(ErrorCode::kInternal, std::string("export failed: ") + e.what());
+  }
+  if (const int signal = gSignal.load(); signal != 0 && !status) {
+    std::fprintf(stderr, "strahler: interrupted by %s: no archive written\n",
+                 signal == SIGINT ? "SIGINT" : "SIGTERM");
+    temporary.discard();
+    return dieBy(signal);
+  }
+  if (!status)
+    return fail(status.error());
+  if (!o.quiet)
+    printSummary(o, stats, std::chrono::duration<double>(Clock::now() - start).count());
+  return 0;
+}
+
+} // namespace
+
+int runExport(const std::vector<std::string>& raw) {
+  auto parsed = CliArgs::parse("export", raw,
+                               {"--format", "--scheme", "--zooms", "--bbox", "--tile", "--size",
+                                "--threads", "--max-tiles", "-o"},
+                               {"--help", "-h", "--quiet"});
+  if (!parsed)
+    return usageError(parsed.error(), kExportUsage);
+  const CliArgs& args = parsed.value();
+  if (args.has("--help") || args.has("-h"))
+    return printUsage(kExportUsage);
+  auto options = parseOptions(args);
+  if (!options)
+    return usageError(options.error(), kExportUsage);
+  if (auto writable = checkWritable(options.value().output); !writable)
+    return fail(writable.error());
+  auto world = store::readWorldFile(args.positional()[0]);
+  if (!world)
+    return fail(world.error());
+  return exportWorld(options.value(), std::move(world).value());
+}
+
+} // namespace strahler::app

@@ -1,0 +1,11 @@
+#!/bin/sh
+# Fixture of the archive checks: the default island as a world file, exported to PMTiles and
+# MBTiles by the real program, for tests/node/check_pmtiles.mjs and tests/cli/check_mbtiles.py.
+# Usage: write_export_archives.sh STRAHLER DIR MINZOOM MAXZOOM
+set -eu
+strahler=$1 dir=$2 minzoom=$3 maxzoom=$4
+rm -rf "$dir"
+mkdir -p "$dir"
+STRAHLER_CACHE_DIR="$dir/cache" "$strahler" generate --quiet -o "$dir/world.world"
+"$strahler" export "$dir/world.world" --zooms "$minzoom-$maxzoom" --threads 2 --quiet -o "$dir/world.pmtiles"
+"$strahler" export "$dir/world.world" --zooms "$minzoom-$maxzoom" --threads 2 --quiet -o "$dir/world.mbtiles"
