@@ -413,7 +413,10 @@ void Session::onShed() {
   shed_ = true;
   if (closing_ || writing_ || !queue_.empty()) // it got busy meanwhile: finish, then close
     return onDrain();
-  if (readingHeader_ && (buffer_.size() > 0 || (parser_ && parser_->got_some())))
+  // A connection still on its first request is answered too, even with nothing read: its
+  // request may be in the socket's buffer already, and a client retries by itself only on a
+  // connection it has used before.
+  if (readingHeader_ && (firstRequest_ || buffer_.size() > 0 || (parser_ && parser_->got_some())))
     return answerAndClose(503, "too many connections: this one had the oldest incomplete "
                                "request header; retry later");
   closeNow(); // idle: a client reopens a closed keep-alive connection by itself

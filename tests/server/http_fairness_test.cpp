@@ -71,6 +71,23 @@ TEST(HttpFairness, AClientAtItsLimitShedsItsOwnOldestSlowConnection) {
   EXPECT_FALSE(slow[1]->closedWithin(100ms)) << "a younger connection was shed";
 }
 
+TEST(HttpFairness, AFreshConnectionShedBeforeItsRequestIsReadIsAnswered503) {
+  // Nothing read yet looks idle, but the request may already sit in the socket's buffer (the
+  // server is busy): closing without a word would lose it, as clients retry only on reused
+  // connections.
+  ServerOptions options = testOptions();
+  options.maxConnectionsPerClient = 1;
+  TestServer server(options);
+  Connection fresh(server.port(), 2000ms, 0, "127.0.0.6");
+  ASSERT_TRUE(eventually([&] { return server.server().connections() == 1; }, 1000ms));
+  const auto response = fetch(server.port(), getRequest("/mine"), 2000ms, "127.0.0.6");
+  ASSERT_TRUE(response);
+  EXPECT_EQ(response->status, 200);
+  const std::string shed = fresh.readUntilClose(1000ms);
+  EXPECT_EQ(shed.rfind("HTTP/1.1 503 ", 0), 0u) << shed;
+  EXPECT_NE(shed.find("Retry-After: 1\r\n"), std::string::npos) << shed;
+}
+
 TEST(HttpFairness, AtTheCapTheOldestIdleConnectionIsShedAndBusyOnesAreKept) {
   ServerOptions options = testOptions();
   options.maxConnections = 3;
