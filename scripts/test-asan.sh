@@ -3,7 +3,8 @@
 # hostile input: the tests of the coastline, params and world-spec readers (input_test), the
 # coastline repair, the world-file decoder and cache (store_test), the HTTP server core
 # (http_server_test: real sockets), the tile cache, worker pool and trimmer (service_test),
-# the PMTiles varint directories and the archive writers (archive_test), and geometry and base
+# the PMTiles varint directories and the archive writers (archive_test), gzip's inflate with its
+# bound (gzip_test), and geometry and base
 # under them. These build a third of the sources, which keeps CI within
 # its 90 minutes on a 2-core machine; the fuzz harnesses (scripts/fuzz.sh) cover the router
 # and the decoders under the same sanitizers. `--all` builds and runs the whole suite instead,
@@ -27,6 +28,6 @@ if [ "${1:-}" = "--all" ]; then
   exit
 fi
 tests=(base_test geometry_test input_test repair_test store_test http_server_test service_test
-       archive_test)
+       archive_test gzip_test)
 cmake --build --preset asan -j "$(nproc)" --target "${tests[@]}"
 ctest --preset asan -j "$(nproc)" --timeout 900 -R "^($(IFS='|'; echo "${tests[*]}"))\$"

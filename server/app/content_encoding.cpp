@@ -1,12 +1,8 @@
 #include "content_encoding.h"
 
-#include "strahler/base/assert.h"
-
 #include <algorithm>
 #include <cctype>
 #include <charconv>
-#include <limits>
-#include <zlib.h>
 
 namespace strahler::app {
 namespace {
@@ -63,26 +59,6 @@ bool acceptsGzip(std::string_view acceptEncoding) {
       any = std::max(any, q);
   }
   return gzip >= 0.0 ? gzip > 0.0 : any > 0.0;
-}
-
-std::string gzipped(std::string_view text) {
-  z_stream stream{};
-  // windowBits 15 + 16: a gzip header and trailer around the deflate stream.
-  const int init = deflateInit2(&stream, Z_BEST_SPEED, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY);
-  STRAHLER_ASSERT(init == Z_OK, "zlib could not start a gzip stream");
-  STRAHLER_ASSERT(text.size() <= std::numeric_limits<uInt>::max(),
-                  "text too large for one zlib call");
-  std::string out(deflateBound(&stream, static_cast<uLong>(text.size())), '\0');
-  stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
-  stream.avail_in = static_cast<uInt>(text.size());
-  stream.next_out = reinterpret_cast<Bytef*>(out.data());
-  stream.avail_out = static_cast<uInt>(out.size());
-  const int result = deflate(&stream, Z_FINISH);
-  deflateEnd(&stream);
-  STRAHLER_ASSERT(result == Z_STREAM_END, "zlib's bound did not hold the gzip stream");
-  out.resize(stream.total_out);
-  out.shrink_to_fit();
-  return out;
 }
 
 } // namespace strahler::app

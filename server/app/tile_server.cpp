@@ -1,6 +1,7 @@
 #include "tile_server.h"
 
 #include "content_encoding.h"
+#include "gzip.h"
 #include "public_url.h"
 #include "route_parser.h"
 #include "tile_route.h"
@@ -165,7 +166,8 @@ TileServer::TileServer(std::vector<std::pair<std::string, construction::WorldDat
     w->rivers = std::async(std::launch::async, [&served, projection] {
                   auto plain = std::make_shared<const std::string>(
                       render::riversGeoJson(served, projection));
-                  return RiversText{plain, std::make_shared<const std::string>(gzipped(*plain))};
+                  return RiversText{plain, std::make_shared<const std::string>(
+                                               gzip::compress(*plain, gzip::Level::kFastest))};
                 }).share();
     const tiling::TileScheme& local = w->tiles->scheme(tiling::SchemeKind::kLocal);
     const geometry::Aabb root = local.localBounds({0, 0, 0});

@@ -1,14 +1,19 @@
 #include "pmtiles_format.h"
 
+#include "gzip.h"
+
 #include <algorithm>
 #include <cstring>
-#include <zlib.h>
 
 namespace strahler::archive::pmtiles {
 namespace {
 
 using base::ErrorCode;
 using base::makeError;
+
+/// The most a directory or the metadata may inflate to: far above any real archive's (a leaf
+/// directory of 16,384 entries is ~100 KB), far below what would exhaust memory.
+constexpr std::size_t kMaxInflatedBytes = 256u << 20;
 
 void putVarint(std::string& out, std::uint64_t v) {
   while (v >= 0x80) {
@@ -42,45 +47,6 @@ template <class T> T getLe(std::string_view in, std::size_t pos) {
   for (std::size_t i = 0; i < sizeof(T); ++i)
     v |= static_cast<std::uint64_t>(static_cast<std::uint8_t>(in[pos + i])) << (8 * i);
   return static_cast<T>(v);
-}
-
-base::Result<std::string> gzip(std::string_view bytes) {
-  z_stream z{};
-  // windowBits 15 + 16: a gzip wrapper (mtime 0, so the same bytes every run).
-  if (deflateInit2(&z, Z_BEST_COMPRESSION, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK)
-    return makeError(ErrorCode::kInternal, "zlib: deflateInit2 failed");
-  std::string out(deflateBound(&z, static_cast<uLong>(bytes.size())) + 32, '\0');
-  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
-  z.avail_in = static_cast<uInt>(bytes.size());
-  z.next_out = reinterpret_cast<Bytef*>(out.data());
-  z.avail_out = static_cast<uInt>(out.size());
-  const int status = deflate(&z, Z_FINISH);
-  out.resize(z.total_out);
-  deflateEnd(&z);
-  if (status != Z_STREAM_END)
-    return makeError(ErrorCode::kInternal, "zlib: deflate did not finish");
-  return out;
-}
-
-base::Result<std::string> gunzip(std::string_view bytes) {
-  z_stream z{};
-  if (inflateInit2(&z, 15 + 16) != Z_OK)
-    return makeError(ErrorCode::kInternal, "zlib: inflateInit2 failed");
-  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
-  z.avail_in = static_cast<uInt>(bytes.size());
-  std::string out;
-  char buffer[65536];
-  int status = Z_OK;
-  while (status == Z_OK) {
-    z.next_out = reinterpret_cast<Bytef*>(buffer);
-    z.avail_out = sizeof buffer;
-    status = inflate(&z, Z_NO_FLUSH);
-    out.append(buffer, sizeof buffer - z.avail_out);
-  }
-  inflateEnd(&z);
-  if (status != Z_STREAM_END)
-    return makeError(ErrorCode::kCorrupt, "pmtiles: damaged gzip data");
-  return out;
 }
 
 /// Root and leaves for leaves of `leafSize` entries.
@@ -217,15 +183,19 @@ base::Result<std::string> compress(std::string_view bytes, Compression compressi
   if (compression == Compression::kNone)
     return std::string(bytes);
   if (compression == Compression::kGzip)
-    return gzip(bytes);
+    return gzip::compress(bytes, gzip::Level::kSmallest);
   return makeError(ErrorCode::kUnsupported, "pmtiles: only none and gzip compression are written");
 }
 
 base::Result<std::string> decompress(std::string_view bytes, Compression compression) {
   if (compression == Compression::kNone)
     return std::string(bytes);
-  if (compression == Compression::kGzip)
-    return gunzip(bytes);
+  if (compression == Compression::kGzip) {
+    auto inflated = gzip::decompress(bytes, kMaxInflatedBytes);
+    if (!inflated)
+      return makeError(inflated.error().code, "pmtiles: " + inflated.error().message);
+    return inflated;
+  }
   return makeError(ErrorCode::kUnsupported, "pmtiles: only none and gzip compression are read");
 }
 
