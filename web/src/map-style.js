@@ -19,6 +19,23 @@ const RELIEF = [
   600, '#8e8b4f', 1000, '#9c7652', 1500, '#b3aaa0', 2200, '#ffffff',
 ];
 
+// The open sea floor's depth: the shelf tends to it away from the shore
+// (CoastShape::kShelfDepth in core/construction/include/strahler/construction/world.h).
+const OPEN_SEA_M = -120;
+
+/** The colour RELIEF gives `elevation` (linear between its stops, as MapLibre interpolates). */
+export function reliefColour(elevation) {
+  const rgb = (hex) => [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
+  for (let i = 2; i < RELIEF.length; i += 2) {
+    if (elevation <= RELIEF[i] || i === RELIEF.length - 2) {
+      const t = Math.min(1, Math.max(0, (elevation - RELIEF[i - 2]) / (RELIEF[i] - RELIEF[i - 2])));
+      const [a, b] = [rgb(RELIEF[i - 1]), rgb(RELIEF[i + 1])];
+      return `#${a.map((v, k) => Math.round(v + t * (b[k] - v)).toString(16).padStart(2, '0')).join('')}`;
+    }
+  }
+  return RELIEF[1];
+}
+
 function riverWidth(scale) {
   return ['interpolate', ['linear'], ['coalesce', ['get', 'strahler'], 1], 1, 0.4 * scale, 6, 4 * scale];
 }
@@ -37,8 +54,9 @@ export function worldStyle(world, exaggeration) {
     },
     terrain: { source: TERRAIN_SOURCE, exaggeration },
     layers: [
-      // The open sea beyond the tiles' bounds, in the colour of the shelf's outer edge.
-      { id: 'background', type: 'background', paint: { 'background-color': '#1f6592' } },
+      // The open sea beyond the tiles' bounds, in the colour the tiles give the open sea floor,
+      // so the bounds leave no seam.
+      { id: 'background', type: 'background', paint: { 'background-color': reliefColour(OPEN_SEA_M) } },
       {
         id: 'relief', type: 'color-relief', source: 'shade',
         paint: { 'color-relief-color': ['interpolate', ['linear'], ['elevation'], ...RELIEF] },

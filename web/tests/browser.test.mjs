@@ -6,7 +6,7 @@ import { dirname, join } from 'node:path';
 import { after, before, describe, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
 import { launchBrowser, openPage } from './lib/browser.mjs';
-import { pixelStats } from './lib/pixels.mjs';
+import { pixelAt, pixelStats } from './lib/pixels.mjs';
 import { exportDefaultWorld } from './lib/archive.mjs';
 import { startServer } from './lib/server.mjs';
 import { startStaticServer } from './lib/static-server.mjs';
@@ -127,6 +127,25 @@ describe('map viewer', () => {
   test('draws a terrain that is not blank (screenshot)', async () => {
     assertNotBlank(await page.locator('#map canvas').screenshot(), 'the map canvas');
     writeFileSync(join(SCREENSHOTS, 'viewer.png'), await page.screenshot());
+  });
+
+  test('the open sea has no seam where the tiles end', async () => {
+    // Just inside and just outside the south edge of the tiles' bounds, a quarter of the way
+    // across (open sea; the island's southern tip is in the middle): the open sea floor in the
+    // tiles, then the background, in one colour.
+    const [west, south, east, north] = (await (await fetch(`${server.url}/worlds`)).json())[0].bounds;
+    const [inside, outside] = await page.evaluate(([lon, lats]) => {
+      document.querySelectorAll('.maplibregl-popup').forEach((popup) => popup.remove()); // the click test's
+      return lats.map((lat) => {
+        const p = window.strahlerMap.project([lon, lat]);
+        return [p.x, p.y];
+      });
+    }, [west + 0.25 * (east - west), [south + 0.02 * (north - south), south - 0.02 * (north - south)]]);
+    const canvas = await page.locator('#map canvas').screenshot();
+    const { width, height } = pixelStats(canvas);
+    for (const [x, y] of [inside, outside]) assert.ok(x > 0 && x < width && y > 0 && y < height, `(${x}, ${y}) is off the canvas`);
+    const [a, b] = [pixelAt(canvas, ...inside), pixelAt(canvas, ...outside)];
+    assert.ok(a.every((v, k) => Math.abs(v - b[k]) <= 6), `sea inside the bounds ${a} at ${inside}, outside ${b} at ${outside}`);
   });
 
   test('the exaggeration slider changes the terrain', async () => {

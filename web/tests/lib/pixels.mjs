@@ -15,3 +15,10 @@ export function pixelStats(pngBytes) {
   const mean = sum / n;
   return { width, height, mean, stdDev: Math.sqrt(Math.max(0, sumSq / n - mean * mean)), colours: colours.size };
 }
+
+/** The [r, g, b] of pixel (x, y) of a PNG (coordinates rounded). */
+export function pixelAt(pngBytes, x, y) {
+  const { data, width } = PNG.sync.read(pngBytes);
+  const i = 4 * (Math.round(y) * width + Math.round(x));
+  return [data[i], data[i + 1], data[i + 2]];
+}
