@@ -12,15 +12,15 @@ packages=(
   libopenimageio-dev
   libspng-dev libdraco-dev libeigen3-dev
   nlohmann-json3-dev
-  libsqlite3-dev sqlite3
-  # python3: tests/cli/check_mbtiles.py reads MBTiles with its sqlite3 module
-  python3
+  # SQLite for MBTiles; python3 (below) reads them in tests/cli/check_mbtiles.py
+  libsqlite3-dev
   libprotobuf-dev protobuf-compiler
   googletest libgtest-dev libbenchmark-dev
   # clang and its runtimes (libFuzzer, sanitizers) for the fuzz harnesses: scripts/fuzz.sh
   clang libclang-rt-14-dev
   chromium
-  # the scale-out kit and its test (scripts/scale-out, tests/scale_out), the load test
+  # the scale-out kit and its test (scripts/scale-out, tests/scale_out), the load test, and
+  # tests/cli/check_mbtiles.py
   nginx-light wrk curl python3
 )
 

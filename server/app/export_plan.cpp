@@ -2,9 +2,6 @@
 
 #include "hilbert_tile_id.h"
 
-#include "strahler/geometry/aabb.h"
-#include "strahler/geometry/projection.h"
-
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -97,15 +94,6 @@ base::Result<LonLatBox> parseBbox(const std::string& text) {
   }
   return makeError(ErrorCode::kInvalidInput,
                    "--bbox '" + text + "': expected four numbers W,S,E,N in degrees");
-}
-
-LonLatBox worldBounds(const construction::WorldData& world) {
-  const geometry::LocalProjection projection(world.projectionCenter.x, world.projectionCenter.y);
-  geometry::Aabb box;
-  for (const geometry::Polygon& p : world.land)
-    for (geometry::Vec2 v : p.outer)
-      box.add(projection.inverse(v));
-  return {box.min.x, box.min.y, box.max.x, box.max.y};
 }
 
 std::optional<LonLatBox> intersect(const LonLatBox& a, const LonLatBox& b) {

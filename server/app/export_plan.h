@@ -2,8 +2,9 @@
 // Which tiles `strahler export` writes: the Web Mercator tiles of a zoom range that touch the
 // world's bounds (intersected with --bbox), and the parsing of those options.
 
+#include "world_bounds.h"
+
 #include "strahler/base/result.h"
-#include "strahler/construction/world_data.h"
 
 #include <cstdint>
 #include <optional>
@@ -11,11 +12,6 @@
 #include <vector>
 
 namespace strahler::app {
-
-/// A box in WGS84 degrees.
-struct LonLatBox {
-  double west = 0.0, south = 0.0, east = 0.0, north = 0.0;
-};
 
 /// The tiles of one zoom inside a box: columns x0..x1, rows y0..y1 (inclusive, XYZ rows).
 struct TileRect {
@@ -31,8 +27,6 @@ struct TileRect {
 base::Result<std::pair<int, int>> parseZoomRange(const std::string& text, int maxZoom);
 /// Parses --bbox "W,S,E,N" in degrees (W < E, S < N, within ±180 / ±90).
 base::Result<LonLatBox> parseBbox(const std::string& text);
-/// The bounds of the world's land, degrees (what the server's /worlds/{id} reports).
-LonLatBox worldBounds(const construction::WorldData& world);
 /// The overlap of two boxes, if they overlap.
 std::optional<LonLatBox> intersect(const LonLatBox& a, const LonLatBox& b);
 /// "W,S,E,N" with 5 decimals, for messages.

@@ -5,6 +5,7 @@
 #include "public_url.h"
 #include "route_parser.h"
 #include "tile_route.h"
+#include "world_bounds.h"
 
 #include "strahler/render/rivers_geojson.h"
 
@@ -142,12 +143,9 @@ TileServer::TileServer(std::vector<std::pair<std::string, construction::WorldDat
     w->id = id;
     w->cacheKey = data.cacheKey;
     const geometry::LocalProjection projection(data.projectionCenter.x, data.projectionCenter.y);
-    geometry::Aabb box;
-    for (const geometry::Polygon& p : data.land)
-      for (geometry::Vec2 v : p.outer)
-        box.add(projection.inverse(v));
-    w->bounds[0] = box.min.x, w->bounds[1] = box.min.y, w->bounds[2] = box.max.x,
-    w->bounds[3] = box.max.y;
+    const LonLatBox box = worldBounds(data);
+    w->bounds[0] = box.west, w->bounds[1] = box.south, w->bounds[2] = box.east,
+    w->bounds[3] = box.north;
     w->center = data.projectionCenter;
     w->metadata = {{"id", id},
                    {"name", data.name},
