@@ -1,8 +1,9 @@
 #pragma once
 
-// libspng behind a narrow, private interface: png_encoder.cpp is the only file that includes
-// spng.h. The benchmark (tests/bench/encoding_bench.cpp) and the unit tests include this
-// header to compare settings; the heightmap encoders let choosePngOptions() pick.
+// libspng behind a narrow, private interface: png_encoder.cpp is the only source of the
+// library that includes spng.h (heightmap_encoder_test decodes with it). The benchmark
+// (tests/bench/encoding_bench.cpp) and the unit tests include this header to compare
+// settings; the heightmap encoders let choosePngOptions() pick.
 
 #include "strahler/base/result.h"
 

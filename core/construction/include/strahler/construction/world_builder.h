@@ -16,6 +16,8 @@ namespace strahler::construction {
 /// profiles, valleys scaled to the catchment, gully relief octaves.
 /// 6: river floors at the sample spacing, rivers joined by the deeper cut, sloping terrain
 /// primitives, valleys that widen with their depth (fitted radii), λ 0.35, concavity 0.3.
+/// 7: rivers fade in from one sample spacing (primitives::riverFade); growth goes back to the
+/// land far from every river (the coverage gaps).
 inline constexpr const char* kGeneratorVersion = "strahler-generator-7";
 
 /// Runs the whole generation of Sections 4–7 on `spec`: network, blocks and analysis

@@ -30,7 +30,7 @@ struct BlockPrimitives {
 struct WorldData {
   std::string name;                ///< Human name of the world ("default", file stem, ...).
   std::string cacheKey;            ///< Hex hash of the canonical spec and generator version.
-  std::string generatorVersion;    ///< strahler version that generated it.
+  std::string generatorVersion;    ///< kGeneratorVersion of the generator that made it.
   input::Params params;            ///< Parameters (seed included) that made it.
   geometry::Vec2 projectionCenter; ///< (lon0, lat0) of the local frame, degrees.
   geometry::MultiPolygon land;     ///< Land in local metres (outer CCW, holes CW).
