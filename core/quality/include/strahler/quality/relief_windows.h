@@ -1,0 +1,56 @@
+#pragma once
+
+#include "strahler/quality/drainage.h"
+#include "strahler/quality/geomorphons.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace strahler::quality {
+
+/// Default side of the relief windows, km (blind_set.py's --window-km).
+inline constexpr double kReliefWindowKm = 7.5;
+/// Default number of windows (blind_set.py's --per-source).
+inline constexpr int kReliefWindowCount = 3;
+
+/// A square window of a raster, in blind_set.py's coordinates: row counted from the north
+/// edge (the raster's last row), col from the west.
+struct WindowPlacement {
+  int row = 0;         ///< First row from the north.
+  int col = 0;         ///< First column from the west.
+  double reliefM = 0.; ///< Highest minus lowest height in the window, metres.
+};
+
+/// The figures of one window.
+struct ReliefWindow {
+  WindowPlacement placement;
+  double spectralSlope = 0.0;   ///< spectralSlope of its heights; NaN if undefined.
+  GeomorphonShares geomorphons; ///< windowGeomorphonShares of its heights.
+};
+
+/// The window figures of a raster.
+struct ReliefWindows {
+  int cells = 0;                    ///< Window side, cells.
+  std::vector<ReliefWindow> list;   ///< Highest relief first.
+  GeomorphonShares meanGeomorphons; ///< Mean of the windows' shares; NaN without windows.
+  double medianSpectralSlope = 0.0; ///< Median over windows with a slope; NaN without.
+};
+
+/// blind_set.py's windows(): candidate squares of `cells` cells every max(4, cells / 8) rows and
+/// columns from the north-west corner, those wholly on land, by decreasing relief (ties: larger
+/// row, then larger col first); greedily kept when they overlap none kept before (row or col
+/// at least `cells` apart), at most `count`.
+std::vector<WindowPlacement> selectReliefWindows(const HeightRaster& raster, int cells,
+                                                 int count);
+
+/// The heights of a window, north row first (as blind_set.py holds them), row-major.
+std::vector<double> windowHeights(const HeightRaster& raster, const WindowPlacement& placement,
+                                  int cells);
+
+/// Selects up to `count` windows of round(sizeKm · 1000 / cellSize) cells and measures their
+/// spectral slope and geomorphon shares (blind_set.py's figures()).
+ReliefWindows measureReliefWindows(const HeightRaster& raster, double sizeKm = kReliefWindowKm,
+                                   int count = kReliefWindowCount,
+                                   const GeomorphonParams& params = {});
+
+} // namespace strahler::quality
