@@ -280,6 +280,21 @@ TEST(WorldCommands, InfoRenderAndAnalyzeAWorldFile) {
   // Rivers everywhere (issue 16): no land farther than 3 km from one.
   EXPECT_LE(relief["riverDistanceM"]["max"].get<double>(), 3000.0);
   EXPECT_EQ(relief["riverDistanceM"]["fartherThan3KmFraction"].get<double>(), 0.0);
+  // Geomorphon shares of the land, and of the 7.5 km windows of highest relief (issue 25).
+  double shareSum = 0.0;
+  for (const auto& [name, share] : relief["geomorphons"]["shares"].items())
+    shareSum += share.get<double>();
+  EXPECT_NEAR(shareSum, 1.0, 1e-9);
+  EXPECT_EQ(relief["windows"]["cells"].get<int>(), 250);
+  ASSERT_FALSE(relief["windows"]["list"].empty());
+  EXPECT_GT(relief["windows"]["medianSpectralSlope"].get<double>(), 2.0);
+  EXPECT_LT(relief["windows"]["medianSpectralSlope"].get<double>(), 7.0);
+  EXPECT_GT(relief["windows"]["meanGeomorphons"]["slope"].get<double>(), 0.0);
+  // Hack's law of the river graph.
+  EXPECT_GT(report["hack"]["nodes"]["points"].get<int>(), 100);
+  EXPECT_GT(report["hack"]["nodes"]["exponent"].get<double>(), 0.3);
+  EXPECT_LT(report["hack"]["nodes"]["exponent"].get<double>(), 1.2);
+  EXPECT_GT(report["hack"]["outlets"]["points"].get<int>(), 2);
 
   // Coarse samples, as large worlds are analysed: valleys two samples wide are still drawn, so
   // the land drains at 120 m too (primitives::riverFade).
@@ -315,6 +330,21 @@ TEST(WorldCommands, AnalyzeADemPrintsItsReliefFigures) {
   EXPECT_TRUE(relief["channelsNearRiversFraction"].is_null());
   EXPECT_TRUE(relief["sinuosity"]["E"].is_null());
   EXPECT_FALSE(report.contains("drainage"));
+
+  // One 2 km window (40 cells) wholly on land, beside the NODATA corner; 26 × 26 interior cells
+  // (7 cells of lookup from each edge), of which the axis row looks up 5 ways and down 3 (a
+  // hollow) and the rest is plain slope. blind_set.py gives the same on this grid.
+  const ProcessRun windowed =
+      strahler("analyze --dem " + dem.string() + " --window-km 2 --windows 2");
+  ASSERT_EQ(windowed.exitCode, 0) << windowed.err;
+  const auto windows = nlohmann::json::parse(windowed.out)["relief"]["windows"];
+  EXPECT_EQ(windows["cells"], 40);
+  ASSERT_EQ(windows["list"].size(), 1u);
+  EXPECT_EQ(windows["list"][0]["row"], 0);
+  EXPECT_EQ(windows["list"][0]["col"], 20);
+  EXPECT_NEAR(windows["meanGeomorphons"]["hollow"].get<double>(), 1.0 / 26.0, 1e-12);
+  EXPECT_NEAR(windows["meanGeomorphons"]["slope"].get<double>(), 25.0 / 26.0, 1e-12);
+  EXPECT_TRUE(relief["windows"]["list"].empty()) << "no 7.5 km window in 3 km";
 
   const ProcessRun scaled = strahler("analyze --dem=" + dem.string() + " --cell-size 100");
   ASSERT_EQ(scaled.exitCode, 0) << scaled.err;
@@ -370,6 +400,8 @@ TEST(WorldCommands, AnalyzeRejectsBadDems) {
   EXPECT_EQ(strahler("analyze --dem " + truncated.string() + " --cell-size abc").exitCode, 2);
   EXPECT_EQ(strahler("analyze --dem " + truncated.string() + " --cell-size -5").exitCode, 2);
   EXPECT_EQ(strahler("analyze --dem").exitCode, 2);
+  EXPECT_EQ(strahler("analyze --dem " + truncated.string() + " --window-km 0").exitCode, 2);
+  EXPECT_EQ(strahler("analyze --dem " + truncated.string() + " --windows 101").exitCode, 2);
 }
 
 TEST(WorldCommands, RejectDamagedOrMissingWorldFiles) {
