@@ -52,8 +52,9 @@ constexpr const char* kAnalyzeUsage =
     "with its geomorphon shares (cells at least the lookup from its edge) and the spectral\n"
     "slope of its radially averaged power spectrum (wavelengths 4 cells to 2 km; larger means\n"
     "smoother), then their mean shares and median spectral slope.\n"
-    "--dem: the relief figures of a real DEM instead: an ESRI ASCII grid (.asc; --cell-size\n"
-    "replaces its cellsize, e.g. for a grid in degrees) or any raster OpenImageIO reads\n"
+    "--dem: the relief figures of a real DEM instead: an ESRI ASCII grid (.asc; a grid in\n"
+    "degrees gets square cells of its latitude spacing, its columns resampled as blind_set.py\n"
+    "does; --cell-size replaces its cellsize instead) or any raster OpenImageIO reads\n"
     "(heights in metres; --cell-size M, metres > 0, required). NODATA cells count as outside.\n"
     "A world's raster may hold at most 60 million cells (up to about 7 GB); larger worlds need a\n"
     "larger --cell-size (e.g. 120 for 100,000 km²).\n";

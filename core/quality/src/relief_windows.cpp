@@ -79,7 +79,7 @@ std::vector<double> windowHeights(const HeightRaster& raster, const WindowPlacem
 ReliefWindows measureReliefWindows(const HeightRaster& raster, double sizeKm, int count,
                                    const GeomorphonParams& params) {
   ReliefWindows out;
-  out.cells = int(std::lround(sizeKm * 1000.0 / raster.cellSize));
+  out.cells = int(std::nearbyint(sizeKm * 1000.0 / raster.cellSize)); // half to even, as Python
   out.meanGeomorphons.fill(kNaN);
   out.medianSpectralSlope = kNaN;
   std::vector<double> slopes;

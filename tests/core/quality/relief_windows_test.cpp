@@ -138,5 +138,48 @@ TEST(ReliefWindows, BigTujungaGivesBlindSetsFigures) {
   EXPECT_NEAR(wide.meanGeomorphons[std::size_t(Geomorphon::kRidge)], 0.095681, 0.002);
 }
 
+/// The same on the 3 arc-second White Mountains grid (degrees: its columns are resampled to
+/// square cells of 92.77 m, as blind_set.py's read_asc does) and the Orkhon valley (91.67 m).
+TEST(ReliefWindows, TheNinetyMetreReferencesGiveBlindSetsFigures) {
+  const std::string white = referenceDem("white-mountains-west-3arcsec.asc");
+  const std::string orkhon = referenceDem("orkhon-valley-92m.asc");
+  if (white.empty() || orkhon.empty())
+    GTEST_SKIP() << "../shared/reference is absent";
+  constexpr PythonWindow kWhite[] = {
+      {930, 230, 1290.084, 4.428229,
+       {0.0, 0.005067, 0.059111, 0.000375, 0.19666, 0.530869, 0.127979, 0.002815, 0.076187,
+        0.000938}},
+      {1020, 270, 1221.143, 5.318650,
+       {0.0, 0.00638, 0.091574, 0.0, 0.196472, 0.449615, 0.16307, 0.0, 0.092513, 0.000375}},
+      {1120, 70, 1193.625, 4.808615,
+       {0.001501, 0.00638, 0.079189, 0.000563, 0.188403, 0.523926, 0.108088, 0.007318, 0.083505,
+        0.001126}},
+  };
+  const auto grid = readDemFile(white, std::nullopt);
+  ASSERT_TRUE(grid.ok()) << grid.error().message;
+  EXPECT_EQ(grid.value().width, 428);
+  EXPECT_EQ(grid.value().height, 1201);
+  EXPECT_NEAR(grid.value().cellSize, 92.766, 0.001);
+  const ReliefWindows w = measureReliefWindows(grid.value());
+  ASSERT_EQ(w.list.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(w.list[i].placement.row, kWhite[i].row) << i;
+    EXPECT_EQ(w.list[i].placement.col, kWhite[i].col) << i;
+    EXPECT_NEAR(w.list[i].placement.reliefM, kWhite[i].relief, 0.01) << i;
+    EXPECT_NEAR(w.list[i].spectralSlope, kWhite[i].spectral, 0.02) << i;
+    for (std::size_t c = 0; c < kGeomorphonCount; ++c)
+      EXPECT_NEAR(w.list[i].geomorphons[c], kWhite[i].shares[c], 0.002) << i;
+  }
+  const auto valley = readDemFile(orkhon, std::nullopt);
+  ASSERT_TRUE(valley.ok()) << valley.error().message;
+  const ReliefWindows o = measureReliefWindows(valley.value());
+  ASSERT_EQ(o.list.size(), 1u);
+  EXPECT_EQ(o.list[0].placement.row, 30);
+  EXPECT_EQ(o.list[0].placement.col, 10);
+  EXPECT_NEAR(o.list[0].spectralSlope, 4.797909, 0.02);
+  EXPECT_NEAR(o.list[0].geomorphons[std::size_t(Geomorphon::kHollow)], 0.145727, 0.002);
+  EXPECT_NEAR(o.list[0].geomorphons[std::size_t(Geomorphon::kValley)], 0.143901, 0.002);
+}
+
 } // namespace
 } // namespace strahler::quality
