@@ -210,8 +210,7 @@ base::Result<WindowOptions> windowOptions(const CliArgs& args) {
   WindowOptions options;
   STRAHLER_ASSIGN_OR_RETURN(const std::optional<double> km,
                             positiveNumber(args, "--window-km", 1000.0, "km"));
-  STRAHLER_ASSIGN_OR_RETURN(const std::optional<long long> count,
-                            args.getInt("--windows", 0, 100));
+  STRAHLER_ASSIGN_OR_RETURN(const std::optional<long long> count, args.getInt("--windows", 0, 100));
   options.sizeKm = km.value_or(options.sizeKm);
   options.count = static_cast<int>(count.value_or(options.count));
   return options;
@@ -228,8 +227,8 @@ quality::ReliefReport reliefReport(const quality::HeightRaster& raster,
   report.terrain = quality::measureRelief(raster, flow);
   report.geomorphons = quality::geomorphonShares(raster, report.geomorphonParams);
   report.windowKm = windows.sizeKm;
-  report.windows = quality::measureReliefWindows(raster, windows.sizeKm, windows.count,
-                                                 report.geomorphonParams);
+  report.windows =
+      quality::measureReliefWindows(raster, windows.sizeKm, windows.count, report.geomorphonParams);
   if (world != nullptr) {
     report.network = quality::compareWithRivers(*world, raster, flow);
     report.drainingFractionUnburnt = quality::checkDrainage(raster, 1.0).drainingFraction;

@@ -2,8 +2,8 @@
 
 #include "strahler/base/assert.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 namespace strahler::quality {

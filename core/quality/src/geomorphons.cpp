@@ -20,8 +20,8 @@ constexpr double kDegToRad = 0.017453292519943295;
 /// r.geomorphon's lookup table: kTable[directions looking down][directions looking up]
 /// (entries past down + up = 8 cannot occur).
 constexpr G kTable[9][9] = {
-    {G::kFlat, G::kFlat, G::kFlat, G::kFootslope, G::kFootslope, G::kValley, G::kValley,
-     G::kValley, G::kPit},
+    {G::kFlat, G::kFlat, G::kFlat, G::kFootslope, G::kFootslope, G::kValley, G::kValley, G::kValley,
+     G::kPit},
     {G::kFlat, G::kFlat, G::kFootslope, G::kFootslope, G::kFootslope, G::kValley, G::kValley,
      G::kValley, G::kSlope},
     {G::kFlat, G::kShoulder, G::kSlope, G::kSlope, G::kHollow, G::kHollow, G::kValley, G::kSlope,

@@ -37,8 +37,7 @@ double windowRelief(const HeightRaster& r, int row, int col, int cells) {
 
 } // namespace
 
-std::vector<WindowPlacement> selectReliefWindows(const HeightRaster& raster, int cells,
-                                                 int count) {
+std::vector<WindowPlacement> selectReliefWindows(const HeightRaster& raster, int cells, int count) {
   std::vector<WindowPlacement> candidates;
   if (cells <= 0 || count <= 0)
     return {};

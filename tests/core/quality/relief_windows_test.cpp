@@ -1,6 +1,5 @@
-#include "strahler/quality/relief_windows.h"
-
 #include "strahler/quality/dem_file.h"
+#include "strahler/quality/relief_windows.h"
 
 #include <gtest/gtest.h>
 
@@ -82,8 +81,8 @@ TEST(ReliefWindows, MeasuresEachWindowAndSummarises) {
   EXPECT_EQ(w.cells, 50);
   ASSERT_EQ(w.list.size(), 2u);
   for (std::size_t c = 0; c < kGeomorphonCount; ++c)
-    EXPECT_NEAR(w.meanGeomorphons[c],
-                (w.list[0].geomorphons[c] + w.list[1].geomorphons[c]) / 2.0, 1e-12);
+    EXPECT_NEAR(w.meanGeomorphons[c], (w.list[0].geomorphons[c] + w.list[1].geomorphons[c]) / 2.0,
+                1e-12);
   EXPECT_NEAR(w.medianSpectralSlope, (w.list[0].spectralSlope + w.list[1].spectralSlope) / 2.0,
               1e-12);
 }
@@ -97,11 +96,20 @@ struct PythonWindow {
   std::array<double, kGeomorphonCount> shares;
 };
 constexpr PythonWindow kBigTujunga5Km[] = {
-    {300, 220, 1159.0, 4.552513,
+    {300,
+     220,
+     1159.0,
+     4.552513,
      {0.0, 0.006504, 0.084503, 4.9e-05, 0.214094, 0.37596, 0.179226, 4.9e-05, 0.125581, 0.014035}},
-    {440, 420, 1116.0, 4.647714,
+    {440,
+     420,
+     1116.0,
+     4.647714,
      {0.0, 0.011052, 0.086166, 9.8e-05, 0.194728, 0.393907, 0.17727, 9.8e-05, 0.128417, 0.008264}},
-    {0, 360, 1100.0, 4.802850,
+    {0,
+     360,
+     1100.0,
+     4.802850,
      {0.0, 0.009438, 0.092132, 0.000147, 0.202846, 0.417184, 0.199765, 9.8e-05, 0.078097,
       0.000293}},
 };
@@ -146,12 +154,21 @@ TEST(ReliefWindows, TheNinetyMetreReferencesGiveBlindSetsFigures) {
   if (white.empty() || orkhon.empty())
     GTEST_SKIP() << "../shared/reference is absent";
   constexpr PythonWindow kWhite[] = {
-      {930, 230, 1290.084, 4.428229,
+      {930,
+       230,
+       1290.084,
+       4.428229,
        {0.0, 0.005067, 0.059111, 0.000375, 0.19666, 0.530869, 0.127979, 0.002815, 0.076187,
         0.000938}},
-      {1020, 270, 1221.143, 5.318650,
+      {1020,
+       270,
+       1221.143,
+       5.318650,
        {0.0, 0.00638, 0.091574, 0.0, 0.196472, 0.449615, 0.16307, 0.0, 0.092513, 0.000375}},
-      {1120, 70, 1193.625, 4.808615,
+      {1120,
+       70,
+       1193.625,
+       4.808615,
        {0.001501, 0.00638, 0.079189, 0.000563, 0.188403, 0.523926, 0.108088, 0.007318, 0.083505,
         0.001126}},
   };

@@ -1,6 +1,5 @@
-#include "strahler/quality/spectral_slope.h"
-
 #include "strahler/quality/fft.h"
+#include "strahler/quality/spectral_slope.h"
 
 #include <gtest/gtest.h>
 

@@ -40,8 +40,7 @@ struct ReliefWindows {
 /// columns from the north-west corner, those wholly on land, by decreasing relief (ties: larger
 /// row, then larger col first); greedily kept when they overlap none kept before (row or col
 /// at least `cells` apart), at most `count`.
-std::vector<WindowPlacement> selectReliefWindows(const HeightRaster& raster, int cells,
-                                                 int count);
+std::vector<WindowPlacement> selectReliefWindows(const HeightRaster& raster, int cells, int count);
 
 /// The heights of a window, north row first (as blind_set.py holds them), row-major.
 std::vector<double> windowHeights(const HeightRaster& raster, const WindowPlacement& placement,
