@@ -13,8 +13,6 @@
 namespace strahler::quality {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 /// Index of the cell `row` rows from the north and `col` from the west.
 std::size_t northIndex(const HeightRaster& r, int row, int col) {
   return std::size_t(r.height - 1 - row) * std::size_t(r.width) + std::size_t(col);
@@ -79,8 +77,6 @@ ReliefWindows measureReliefWindows(const HeightRaster& raster, double sizeKm, in
                                    const GeomorphonParams& params) {
   ReliefWindows out;
   out.cells = int(std::nearbyint(sizeKm * 1000.0 / raster.cellSize)); // half to even, as Python
-  out.meanGeomorphons.fill(kNaN);
-  out.medianSpectralSlope = kNaN;
   std::vector<double> slopes;
   for (const WindowPlacement& p : selectReliefWindows(raster, out.cells, count)) {
     const std::vector<double> z = windowHeights(raster, p, out.cells);

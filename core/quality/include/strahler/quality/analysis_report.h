@@ -25,16 +25,9 @@ struct ReliefReport {
   double drainingFractionUnburnt = std::numeric_limits<double>::quiet_NaN();
   GeomorphonParams geomorphonParams; ///< Parameters of the two geomorphon figures.
   /// geomorphonShares over every land cell; NaN when not measured.
-  GeomorphonShares geomorphons = nanShares();
+  GeomorphonShares geomorphons = noGeomorphonShares();
   double windowKm = kReliefWindowKm; ///< Side of the relief windows, km.
   ReliefWindows windows;             ///< measureReliefWindows of the raster.
-
-  /// Shares that are all NaN.
-  static GeomorphonShares nanShares() {
-    GeomorphonShares s;
-    s.fill(std::numeric_limits<double>::quiet_NaN());
-    return s;
-  }
 };
 
 /// The checks as one JSON object, keys always present and in this order (NaN and

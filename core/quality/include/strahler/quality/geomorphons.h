@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace strahler::quality {
@@ -31,6 +32,14 @@ extern const std::array<const char*, kGeomorphonCount> kGeomorphonNames;
 
 /// Share of each class (indexed by Geomorphon), summing to 1; all NaN without cells.
 using GeomorphonShares = std::array<double, kGeomorphonCount>;
+
+/// Shares that are all NaN (nothing measured).
+constexpr GeomorphonShares noGeomorphonShares() {
+  GeomorphonShares shares{};
+  for (double& s : shares)
+    s = std::numeric_limits<double>::quiet_NaN();
+  return shares;
+}
 
 /// The two parameters of the classification.
 struct GeomorphonParams {

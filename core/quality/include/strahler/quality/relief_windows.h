@@ -4,6 +4,7 @@
 #include "strahler/quality/geomorphons.h"
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace strahler::quality {
@@ -24,16 +25,18 @@ struct WindowPlacement {
 /// The figures of one window.
 struct ReliefWindow {
   WindowPlacement placement;
-  double spectralSlope = 0.0;   ///< spectralSlope of its heights; NaN if undefined.
-  GeomorphonShares geomorphons; ///< windowGeomorphonShares of its heights.
+  double spectralSlope = std::numeric_limits<double>::quiet_NaN(); ///< NaN if undefined.
+  GeomorphonShares geomorphons = noGeomorphonShares();             ///< windowGeomorphonShares.
 };
 
 /// The window figures of a raster.
 struct ReliefWindows {
-  int cells = 0;                    ///< Window side, cells.
-  std::vector<ReliefWindow> list;   ///< Highest relief first.
-  GeomorphonShares meanGeomorphons; ///< Mean of the windows' shares; NaN without windows.
-  double medianSpectralSlope = 0.0; ///< Median over windows with a slope; NaN without.
+  int cells = 0;                  ///< Window side, cells.
+  std::vector<ReliefWindow> list; ///< Highest relief first.
+  /// Mean of the windows' shares; NaN without windows.
+  GeomorphonShares meanGeomorphons = noGeomorphonShares();
+  /// Median over the windows with a spectral slope; NaN without.
+  double medianSpectralSlope = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// blind_set.py's windows(): candidate squares of `cells` cells every max(4, cells / 8) rows and
