@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <thread>
 #include <variant>
@@ -38,6 +39,7 @@ constexpr const char* kRenderUsage =
     "default 1600, along the longer side).\n";
 constexpr const char* kAnalyzeUsage =
     "usage: strahler analyze WORLD.world [--cell-size M] [--window-km KM] [--windows N]\n"
+    "                        [--compare-dem FILE]\n"
     "       strahler analyze --dem FILE [--cell-size M] [--window-km KM] [--windows N]\n"
     "Checks that the terrain respects its water and prints JSON: the share of land cells\n"
     "(M metres, 5..1000, default 30) that drain to the sea or a lake after filling depressions\n"
@@ -51,7 +53,9 @@ constexpr const char* kAnalyzeUsage =
     "highest-relief squares of KM km (default 7.5) wholly on land, at the raster's cell, each\n"
     "with its geomorphon shares (cells at least the lookup from its edge) and the spectral\n"
     "slope of its radially averaged power spectrum (wavelengths 4 cells to 2 km; larger means\n"
-    "smoother), then their mean shares and median spectral slope.\n"
+    "smoother), then their mean shares and median spectral slope. --compare-dem FILE adds\n"
+    "the same window figures of a DEM (read as --dem reads it; compare at its cell size) and\n"
+    "the geomorphon distance (half L1 of the mean shares) and spectral slope difference.\n"
     "--dem: the relief figures of a real DEM instead: an ESRI ASCII grid (.asc; a grid in\n"
     "degrees gets square cells of its latitude spacing, its columns resampled as blind_set.py\n"
     "does; --cell-size replaces its cellsize instead) or any raster OpenImageIO reads\n"
@@ -257,16 +261,20 @@ int analyzeDem(const CliArgs& args) {
 } // namespace
 
 int runAnalyze(const std::vector<std::string>& raw) {
-  auto parsed = CliArgs::parse("analyze", raw, {"--cell-size", "--dem", "--window-km", "--windows"},
-                               {"--help", "-h"});
+  auto parsed = CliArgs::parse(
+      "analyze", raw, {"--cell-size", "--dem", "--window-km", "--windows", "--compare-dem"},
+      {"--help", "-h"});
   if (!parsed)
     return usageError(parsed.error(), kAnalyzeUsage);
   if (parsed.value().has("--help") || parsed.value().has("-h"))
     return printUsage(kAnalyzeUsage);
+  if (parsed.value().get("--dem") && parsed.value().get("--compare-dem"))
+    return usageError({base::ErrorCode::kInvalidInput, "--compare-dem needs a WORLD, not --dem"},
+                      kAnalyzeUsage);
   if (parsed.value().get("--dem"))
     return analyzeDem(parsed.value());
-  auto opened =
-      openWorld("analyze", raw, {"--cell-size", "--window-km", "--windows"}, kAnalyzeUsage);
+  auto opened = openWorld(
+      "analyze", raw, {"--cell-size", "--window-km", "--windows", "--compare-dem"}, kAnalyzeUsage);
   if (auto* code = std::get_if<int>(&opened))
     return *code;
   WorldCommand& c = std::get<WorldCommand>(opened);
@@ -276,6 +284,13 @@ int runAnalyze(const std::vector<std::string>& raw) {
   auto windows = windowOptions(c.args);
   if (!windows)
     return usageError(windows.error(), kAnalyzeUsage);
+  std::optional<quality::HeightRaster> reference;
+  if (const auto dem = c.args.get("--compare-dem")) {
+    auto read = quality::readDemFile(*dem, std::nullopt);
+    if (!read)
+      return fail(read.error());
+    reference = std::move(read).value();
+  }
   const construction::World world(std::move(c.world));
   const double cellSize = static_cast<double>(cell.value().value_or(30));
   if (const double cells = quality::worldRasterCells(world, cellSize); cells > kMaxAnalysisCells)
@@ -290,7 +305,12 @@ int runAnalyze(const std::vector<std::string>& raw) {
             ")"));
   quality::HeightRaster raster =
       quality::rasterizeWorld(world, cellSize, threadCount(), quality::RiverBurning::kNone);
-  const quality::ReliefReport relief = reliefReport(raster, &world, windows.value());
+  quality::ReliefReport relief = reliefReport(raster, &world, windows.value());
+  if (reference)
+    relief.comparison = quality::compareReliefWindows(
+        relief.windows, c.args.get("--compare-dem").value_or(""), reference->cellSize,
+        quality::measureReliefWindows(*reference, windows.value().sizeKm, windows.value().count,
+                                      relief.geomorphonParams));
   quality::burnRivers(world, raster);
   const quality::DrainageReport drainage = quality::checkDrainage(raster, 1.0);
   const quality::RiverProfileReport rivers = quality::checkRiversDescend(

@@ -303,6 +303,36 @@ TEST(WorldCommands, InfoRenderAndAnalyzeAWorldFile) {
   const auto coarseReport = nlohmann::json::parse(coarse.out);
   EXPECT_EQ(coarseReport["relief"]["raster"]["cellSizeM"].get<double>(), 120.0);
   EXPECT_GE(coarseReport["drainage"]["drainingFractionUnburnt"].get<double>(), 0.99);
+  // Window figures beside a DEM's (80 x 80 cells of 30 m of ridges and valleys), 2 km windows.
+  std::ostringstream grid;
+  grid << "ncols 80\nnrows 80\nxllcorner 0\nyllcorner 0\ncellsize 30\n";
+  for (int row = 0; row < 80; ++row) {
+    for (int col = 0; col < 80; ++col)
+      grid << 500.0 + 80.0 * std::sin(col * 0.3) * std::cos(row * 0.2) + 2.0 * col << ' ';
+    grid << '\n';
+  }
+  const fs::path dem = writeScratch("ridges.asc", grid.str());
+  const ProcessRun compared = strahler(
+      "analyze " + world.string() + " --cell-size 120 --window-km 2 --compare-dem " + dem.string());
+  ASSERT_EQ(compared.exitCode, 0) << compared.err;
+  const auto comparedRelief = nlohmann::json::parse(compared.out)["relief"];
+  const auto& comparison = comparedRelief["comparison"];
+  EXPECT_EQ(comparison["dem"], dem.string());
+  EXPECT_EQ(comparison["demCellSizeM"].get<double>(), 30.0);
+  EXPECT_EQ(comparison["demWindows"].get<int>(), 1);
+  double distance = 0.0;
+  for (const auto& [name, share] : comparison["demMeanGeomorphons"].items())
+    distance += std::abs(share.get<double>() -
+                         comparedRelief["windows"]["meanGeomorphons"][name].get<double>());
+  EXPECT_NEAR(comparison["geomorphonDistance"].get<double>(), distance / 2.0, 1e-12);
+  EXPECT_NEAR(comparison["spectralSlopeDifference"].get<double>(),
+              comparedRelief["windows"]["medianSpectralSlope"].get<double>() -
+                  comparison["demMedianSpectralSlope"].get<double>(),
+              1e-12);
+  EXPECT_TRUE(relief["comparison"].is_null()) << "null without --compare-dem";
+  EXPECT_EQ(strahler("analyze " + world.string() + " --compare-dem /nonexistent.asc").exitCode, 1);
+  EXPECT_EQ(strahler("analyze --dem " + dem.string() + " --compare-dem " + dem.string()).exitCode,
+            2);
   // A raster too large for memory is refused with the cell size that fits.
   const ProcessRun tooFine = strahler("analyze " + world.string() + " --cell-size 5");
   EXPECT_EQ(tooFine.exitCode, 1);

@@ -96,6 +96,20 @@ Json windowsJson(const ReliefReport& relief) {
   return json;
 }
 
+Json comparisonJson(const std::optional<WindowComparison>& comparison) {
+  if (!comparison)
+    return nullptr;
+  Json json = Json::object();
+  json["dem"] = comparison->dem;
+  json["demCellSizeM"] = number(comparison->demCellSize);
+  json["demWindows"] = comparison->demWindows.list.size();
+  json["demMeanGeomorphons"] = sharesJson(comparison->demWindows.meanGeomorphons);
+  json["demMedianSpectralSlope"] = number(comparison->demWindows.medianSpectralSlope);
+  json["geomorphonDistance"] = number(comparison->geomorphonDistance);
+  json["spectralSlopeDifference"] = number(comparison->spectralSlopeDifference);
+  return json;
+}
+
 Json reliefJson(const ReliefReport& relief) {
   const ReliefFigures& t = relief.terrain;
   const NetworkReliefFigures& n = relief.network;
@@ -133,6 +147,7 @@ Json reliefJson(const ReliefReport& relief) {
                          {"flatDeg", number(relief.geomorphonParams.flatDeg)},
                          {"shares", sharesJson(relief.geomorphons)}};
   json["windows"] = windowsJson(relief);
+  json["comparison"] = comparisonJson(relief.comparison);
   return json;
 }
 

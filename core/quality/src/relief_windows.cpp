@@ -103,4 +103,15 @@ ReliefWindows measureReliefWindows(const HeightRaster& raster, double sizeKm, in
   return out;
 }
 
+WindowComparison compareReliefWindows(const ReliefWindows& windows, const std::string& dem,
+                                      double demCellSize, const ReliefWindows& demWindows) {
+  WindowComparison c;
+  c.dem = dem;
+  c.demCellSize = demCellSize;
+  c.demWindows = demWindows;
+  c.geomorphonDistance = geomorphonDistance(windows.meanGeomorphons, demWindows.meanGeomorphons);
+  c.spectralSlopeDifference = windows.medianSpectralSlope - demWindows.medianSpectralSlope;
+  return c;
+}
+
 } // namespace strahler::quality

@@ -10,6 +10,7 @@
 #include "strahler/quality/river_profile.h"
 
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace strahler::quality {
@@ -28,6 +29,8 @@ struct ReliefReport {
   GeomorphonShares geomorphons = noGeomorphonShares();
   double windowKm = kReliefWindowKm; ///< Side of the relief windows, km.
   ReliefWindows windows;             ///< measureReliefWindows of the raster.
+  /// With `analyze WORLD --compare-dem FILE`: the windows against that DEM's.
+  std::optional<WindowComparison> comparison;
 };
 
 /// The checks as one JSON object, keys always present and in this order (NaN and
@@ -57,7 +60,10 @@ std::string analysisReportJson(const DrainageReport& drainage, const HortonStati
 ///    "sinuosity": {"B", "E", "D", "D-delta"},
 ///    "geomorphons": {"lookupM", "flatDeg", "shares": {"flat", "peak", ..., "pit"}},
 ///    "windows": {"sizeKm", "cells", "meanGeomorphons": shares, "medianSpectralSlope",
-///                "list": [{"row", "col", "reliefM", "spectralSlope", "geomorphons": shares}]}}
+///                "list": [{"row", "col", "reliefM", "spectralSlope", "geomorphons": shares}]},
+///    "comparison": null, or with --compare-dem {"dem", "demCellSizeM", "demWindows" (count),
+///                  "demMeanGeomorphons": shares, "demMedianSpectralSlope",
+///                  "geomorphonDistance", "spectralSlopeDifference"}}
 /// (definitions in relief.h, river_agreement.h, geomorphons.h, spectral_slope.h and
 /// relief_windows.h; the network figures are null without a world; "windows" rows count from
 /// the north edge, as blind_set.py's).

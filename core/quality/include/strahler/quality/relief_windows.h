@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace strahler::quality {
@@ -38,6 +39,21 @@ struct ReliefWindows {
   /// Median over the windows with a spectral slope; NaN without.
   double medianSpectralSlope = std::numeric_limits<double>::quiet_NaN();
 };
+
+/// A raster's window figures beside those of a reference DEM, windows of the same size.
+struct WindowComparison {
+  std::string dem;          ///< The reference's path.
+  double demCellSize = 0.0; ///< Its cell, metres: compare rasters of the same cell.
+  ReliefWindows demWindows; ///< Its windows.
+  /// geomorphonDistance between the two mean shares (half L1, 0..1); NaN if either has none.
+  double geomorphonDistance = std::numeric_limits<double>::quiet_NaN();
+  /// The raster's median spectral slope minus the DEM's; NaN if either has none.
+  double spectralSlopeDifference = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// Compares `windows` with a DEM's (`demWindows`, of `dem` at `demCellSize` metres).
+WindowComparison compareReliefWindows(const ReliefWindows& windows, const std::string& dem,
+                                      double demCellSize, const ReliefWindows& demWindows);
 
 /// blind_set.py's windows(): candidate squares of `cells` cells every max(4, cells / 8) rows and
 /// columns from the north-west corner, those wholly on land, by decreasing relief (ties: larger
