@@ -39,8 +39,9 @@ constexpr const char* kRenderUsage =
     "default 1600, along the longer side).\n";
 constexpr const char* kAnalyzeUsage =
     "usage: strahler analyze WORLD.world [--cell-size M] [--window-km KM] [--windows N]\n"
-    "                        [--compare-dem FILE]\n"
+    "                        [--window-cell M] [--compare-dem FILE]\n"
     "       strahler analyze --dem FILE [--cell-size M] [--window-km KM] [--windows N]\n"
+    "                        [--window-cell M]\n"
     "Checks that the terrain respects its water and prints JSON: the share of land cells\n"
     "(M metres, 5..1000, default 30) that drain to the sea or a lake after filling depressions\n"
     "shallower than 1 m (with rivers burnt in, and without), rises along river centrelines\n"
@@ -53,7 +54,9 @@ constexpr const char* kAnalyzeUsage =
     "highest-relief squares of KM km (default 7.5) wholly on land, at the raster's cell, each\n"
     "with its geomorphon shares (cells at least the lookup from its edge) and the spectral\n"
     "slope of its radially averaged power spectrum (wavelengths 4 cells to 2 km; larger means\n"
-    "smoother), then their mean shares and median spectral slope. --compare-dem FILE adds\n"
+    "smoother), then their mean shares and median spectral slope. --window-cell M resamples\n"
+    "the raster to M-metre cells for these (bilinearly, as the script's --cell does).\n"
+    "--compare-dem FILE adds\n"
     "the same window figures of a DEM (read as --dem reads it; compare at its cell size) and\n"
     "the geomorphon distance (half L1 of the mean shares) and spectral slope difference.\n"
     "--dem: the relief figures of a real DEM instead: an ESRI ASCII grid (.asc; a grid in\n"
@@ -208,6 +211,16 @@ base::Result<std::optional<double>> demCellSize(const CliArgs& args) {
 struct WindowOptions {
   double sizeKm = quality::kReliefWindowKm;
   int count = quality::kReliefWindowCount;
+  std::optional<double> cellSize; ///< --window-cell: resample to this before taking windows.
+
+  /// The window figures of `raster`, resampled first when a window cell is set.
+  quality::ReliefWindows measure(const quality::HeightRaster& raster,
+                                 const quality::GeomorphonParams& params) const {
+    if (cellSize && std::abs(*cellSize - raster.cellSize) > 1e-6)
+      return quality::measureReliefWindows(quality::resampleRaster(raster, *cellSize), sizeKm,
+                                           count, params);
+    return quality::measureReliefWindows(raster, sizeKm, count, params);
+  }
 };
 
 base::Result<WindowOptions> windowOptions(const CliArgs& args) {
@@ -215,6 +228,7 @@ base::Result<WindowOptions> windowOptions(const CliArgs& args) {
   STRAHLER_ASSIGN_OR_RETURN(const std::optional<double> km,
                             positiveNumber(args, "--window-km", 1000.0, "km"));
   STRAHLER_ASSIGN_OR_RETURN(const std::optional<long long> count, args.getInt("--windows", 0, 100));
+  STRAHLER_ASSIGN_OR_RETURN(options.cellSize, positiveNumber(args, "--window-cell", 1e5, "metres"));
   options.sizeKm = km.value_or(options.sizeKm);
   options.count = static_cast<int>(count.value_or(options.count));
   return options;
@@ -231,8 +245,7 @@ quality::ReliefReport reliefReport(const quality::HeightRaster& raster,
   report.terrain = quality::measureRelief(raster, flow);
   report.geomorphons = quality::geomorphonShares(raster, report.geomorphonParams);
   report.windowKm = windows.sizeKm;
-  report.windows =
-      quality::measureReliefWindows(raster, windows.sizeKm, windows.count, report.geomorphonParams);
+  report.windows = windows.measure(raster, report.geomorphonParams);
   if (world != nullptr) {
     report.network = quality::compareWithRivers(*world, raster, flow);
     report.drainingFractionUnburnt = quality::checkDrainage(raster, 1.0).drainingFraction;
@@ -262,7 +275,8 @@ int analyzeDem(const CliArgs& args) {
 
 int runAnalyze(const std::vector<std::string>& raw) {
   auto parsed = CliArgs::parse(
-      "analyze", raw, {"--cell-size", "--dem", "--window-km", "--windows", "--compare-dem"},
+      "analyze", raw,
+      {"--cell-size", "--dem", "--window-km", "--windows", "--window-cell", "--compare-dem"},
       {"--help", "-h"});
   if (!parsed)
     return usageError(parsed.error(), kAnalyzeUsage);
@@ -274,7 +288,8 @@ int runAnalyze(const std::vector<std::string>& raw) {
   if (parsed.value().get("--dem"))
     return analyzeDem(parsed.value());
   auto opened = openWorld(
-      "analyze", raw, {"--cell-size", "--window-km", "--windows", "--compare-dem"}, kAnalyzeUsage);
+      "analyze", raw, {"--cell-size", "--window-km", "--windows", "--window-cell", "--compare-dem"},
+      kAnalyzeUsage);
   if (auto* code = std::get_if<int>(&opened))
     return *code;
   WorldCommand& c = std::get<WorldCommand>(opened);
@@ -309,8 +324,7 @@ int runAnalyze(const std::vector<std::string>& raw) {
   if (reference)
     relief.comparison = quality::compareReliefWindows(
         relief.windows, c.args.get("--compare-dem").value_or(""), reference->cellSize,
-        quality::measureReliefWindows(*reference, windows.value().sizeKm, windows.value().count,
-                                      relief.geomorphonParams));
+        windows.value().measure(*reference, relief.geomorphonParams));
   quality::burnRivers(world, raster);
   const quality::DrainageReport drainage = quality::checkDrainage(raster, 1.0);
   const quality::RiverProfileReport rivers = quality::checkRiversDescend(

@@ -375,6 +375,12 @@ TEST(WorldCommands, AnalyzeADemPrintsItsReliefFigures) {
   EXPECT_NEAR(windows["meanGeomorphons"]["hollow"].get<double>(), 1.0 / 26.0, 1e-12);
   EXPECT_NEAR(windows["meanGeomorphons"]["slope"].get<double>(), 25.0 / 26.0, 1e-12);
   EXPECT_TRUE(relief["windows"]["list"].empty()) << "no 7.5 km window in 3 km";
+  const ProcessRun resampled =
+      strahler("analyze --dem " + dem.string() + " --window-km 2 --window-cell 100");
+  ASSERT_EQ(resampled.exitCode, 0) << resampled.err;
+  const auto coarseWindows = nlohmann::json::parse(resampled.out)["relief"]["windows"];
+  EXPECT_EQ(coarseWindows["cellSizeM"], 100.0);
+  EXPECT_EQ(coarseWindows["cells"], 20);
 
   const ProcessRun scaled = strahler("analyze --dem=" + dem.string() + " --cell-size 100");
   ASSERT_EQ(scaled.exitCode, 0) << scaled.err;

@@ -89,6 +89,7 @@ Json windowsJson(const ReliefReport& relief) {
                     {"geomorphons", sharesJson(w.geomorphons)}});
   Json json = Json::object();
   json["sizeKm"] = number(relief.windowKm);
+  json["cellSizeM"] = number(relief.windows.cellSize);
   json["cells"] = relief.windows.cells;
   json["meanGeomorphons"] = sharesJson(relief.windows.meanGeomorphons);
   json["medianSpectralSlope"] = number(relief.windows.medianSpectralSlope);

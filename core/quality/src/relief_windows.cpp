@@ -33,7 +33,62 @@ double windowRelief(const HeightRaster& r, int row, int col, int cells) {
   return double(hi) - double(lo);
 }
 
+/// One axis of scipy.ndimage.zoom: for each output index, the two input indices, the weight of
+/// the second, and the nearest input index.
+struct AxisSample {
+  std::size_t lo, hi;
+  double t;
+  std::size_t nearest;
+};
+
+std::vector<AxisSample> zoomAxis(int in, int out) {
+  std::vector<AxisSample> samples(static_cast<std::size_t>(out));
+  const double scale = out > 1 ? double(in - 1) / double(out - 1) : 0.0;
+  const std::size_t last = std::size_t(in - 1);
+  for (std::size_t j = 0; j < samples.size(); ++j) {
+    const double at = std::min(double(j) * scale, double(last));
+    const std::size_t lo = std::min(std::size_t(at), last);
+    samples[j] = {lo, std::min(lo + 1, last), at - double(lo),
+                  std::min(std::size_t(std::floor(at + 0.5)), last)};
+  }
+  return samples;
+}
+
 } // namespace
+
+HeightRaster resampleRaster(const HeightRaster& raster, double cellSize) {
+  const double zoom = raster.cellSize / cellSize;
+  HeightRaster r;
+  r.width = std::max(1, int(std::nearbyint(raster.width * zoom)));
+  r.height = std::max(1, int(std::nearbyint(raster.height * zoom)));
+  r.cellSize = cellSize;
+  r.origin = raster.origin;
+  const std::vector<AxisSample> xs = zoomAxis(raster.width, r.width);
+  const std::vector<AxisSample> ys = zoomAxis(raster.height, r.height);
+  const std::size_t w = std::size_t(raster.width);
+  r.heights.resize(std::size_t(r.width) * std::size_t(r.height));
+  r.cellClass.resize(r.heights.size());
+  std::size_t i = 0;
+  for (const AxisSample& y : ys)
+    for (const AxisSample& x : xs) {
+      const auto at = [&](std::size_t yy, std::size_t xx) { return yy * w + xx; };
+      const double top =
+          (1 - x.t) * raster.heights[at(y.lo, x.lo)] + x.t * raster.heights[at(y.lo, x.hi)];
+      const double bottom =
+          (1 - x.t) * raster.heights[at(y.hi, x.lo)] + x.t * raster.heights[at(y.hi, x.hi)];
+      r.heights[i] = float((1 - y.t) * top + y.t * bottom);
+      bool land = d8::isLand(raster, at(y.nearest, x.nearest));
+      for (std::size_t yy : {y.lo, y.hi})
+        for (std::size_t xx : {x.lo, x.hi}) {
+          const bool weighted =
+              (yy == y.lo ? 1 - y.t : y.t) > 0 && (xx == x.lo ? 1 - x.t : x.t) > 0;
+          land = land && (!weighted || d8::isLand(raster, at(yy, xx)));
+        }
+      r.cellClass[i++] =
+          land ? raster.cellClass[at(y.nearest, x.nearest)] : std::uint8_t(CellClass::kSea);
+    }
+  return r;
+}
 
 std::vector<WindowPlacement> selectReliefWindows(const HeightRaster& raster, int cells, int count) {
   std::vector<WindowPlacement> candidates;
@@ -77,6 +132,7 @@ ReliefWindows measureReliefWindows(const HeightRaster& raster, double sizeKm, in
                                    const GeomorphonParams& params) {
   ReliefWindows out;
   out.cells = int(std::nearbyint(sizeKm * 1000.0 / raster.cellSize)); // half to even, as Python
+  out.cellSize = raster.cellSize;
   std::vector<double> slopes;
   for (const WindowPlacement& p : selectReliefWindows(raster, out.cells, count)) {
     const std::vector<double> z = windowHeights(raster, p, out.cells);

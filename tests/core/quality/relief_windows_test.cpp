@@ -87,6 +87,33 @@ TEST(ReliefWindows, MeasuresEachWindowAndSummarises) {
               1e-12);
 }
 
+TEST(ReliefWindows, ResamplingAsScipyZoom) {
+  // 120 x 100 cells of 30 m to 90 m: 40 x 33 cells (100 / 3 = 33.3); output column j samples
+  // input column j · 119 / 39, so a plane stays the same plane.
+  HeightRaster r = flatLand();
+  for (int y = 0; y < r.height; ++y)
+    for (int x = 0; x < r.width; ++x)
+      heightAt(r, x, y) = float(2.0 * x + 0.5 * y);
+  r.cellClass[std::size_t(50 * r.width + 61)] = std::uint8_t(CellClass::kSea);
+  const HeightRaster coarse = resampleRaster(r, 90.0);
+  EXPECT_EQ(coarse.width, 40);
+  EXPECT_EQ(coarse.height, 33);
+  EXPECT_EQ(coarse.cellSize, 90.0);
+  const double sx = 119.0 / 39.0, sy = 99.0 / 32.0;
+  for (int y = 0; y < coarse.height; ++y)
+    for (int x = 0; x < coarse.width; ++x)
+      EXPECT_NEAR(coarse.heights[std::size_t(y * coarse.width + x)], 2.0 * x * sx + 0.5 * y * sy,
+                  1e-3)
+          << x << " " << y;
+  // Input (61, 50) is mixed into output column 20 (at 61.03) of row 16 (at 49.5): outside.
+  std::size_t outside = 0;
+  for (std::uint8_t c : coarse.cellClass)
+    outside += c != std::uint8_t(CellClass::kLand) ? 1 : 0;
+  EXPECT_EQ(coarse.cellClass[std::size_t(16 * coarse.width + 20)], std::uint8_t(CellClass::kSea));
+  EXPECT_GE(outside, 1u);
+  EXPECT_LE(outside, 4u);
+}
+
 /// The 5 km windows of Big Tujunga west at 30 m: blind_set.py's own figures (numpy), computed
 /// by importing its windows(), spectral_slope() and geomorphons() on the same file:
 ///   h, cell, valid = read_dem(path); for y, x in windows(h, valid, 167, 3): ...
@@ -144,6 +171,38 @@ TEST(ReliefWindows, BigTujungaGivesBlindSetsFigures) {
   EXPECT_NEAR(wide.meanGeomorphons[std::size_t(Geomorphon::kSlope)], 0.391554, 0.002);
   EXPECT_NEAR(wide.meanGeomorphons[std::size_t(Geomorphon::kValley)], 0.106332, 0.002);
   EXPECT_NEAR(wide.meanGeomorphons[std::size_t(Geomorphon::kRidge)], 0.095681, 0.002);
+  // Resampled to 90 m as the script's --cell 90 does (scipy.ndimage.zoom): 214 x 200 cells,
+  // windows of 83 cells.
+  const HeightRaster coarse = resampleRaster(raster.value(), 90.0);
+  EXPECT_EQ(coarse.width, 200);
+  EXPECT_EQ(coarse.height, 214);
+  const ReliefWindows at90 = measureReliefWindows(coarse);
+  ASSERT_EQ(at90.list.size(), 3u);
+  constexpr PythonWindow kAt90[] = {
+      {40,
+       90,
+       1393.095,
+       3.871606,
+       {0.0, 0.015467, 0.150933, 0.0, 0.187733, 0.300978, 0.174933, 0.0, 0.162844, 0.007111}},
+      {70,
+       0,
+       1148.54,
+       4.005216,
+       {0.0, 0.009778, 0.127289, 0.000356, 0.2016, 0.3296, 0.1712, 0.000178, 0.154311, 0.005689}},
+      {130,
+       110,
+       1122.16,
+       3.785791,
+       {0.0, 0.013333, 0.128178, 0.0, 0.205511, 0.315556, 0.170844, 0.0, 0.153244, 0.013333}},
+  };
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(at90.list[i].placement.row, kAt90[i].row) << i;
+    EXPECT_EQ(at90.list[i].placement.col, kAt90[i].col) << i;
+    EXPECT_NEAR(at90.list[i].placement.reliefM, kAt90[i].relief, 0.01) << i;
+    EXPECT_NEAR(at90.list[i].spectralSlope, kAt90[i].spectral, 0.02) << i;
+    for (std::size_t c = 0; c < kGeomorphonCount; ++c)
+      EXPECT_NEAR(at90.list[i].geomorphons[c], kAt90[i].shares[c], 0.002) << i;
+  }
 }
 
 /// The same on the 3 arc-second White Mountains grid (degrees: its columns are resampled to

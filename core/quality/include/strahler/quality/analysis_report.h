@@ -59,7 +59,7 @@ std::string analysisReportJson(const DrainageReport& drainage, const HortonStati
 ///    "riverDistanceM": {"p99", "max", "fartherThan3KmFraction", "farthestAt": [x, y]},
 ///    "sinuosity": {"B", "E", "D", "D-delta"},
 ///    "geomorphons": {"lookupM", "flatDeg", "shares": {"flat", "peak", ..., "pit"}},
-///    "windows": {"sizeKm", "cells", "meanGeomorphons": shares, "medianSpectralSlope",
+///    "windows": {"sizeKm", "cellSizeM", "cells", "meanGeomorphons": shares, "medianSpectralSlope",
 ///                "list": [{"row", "col", "reliefM", "spectralSlope", "geomorphons": shares}]},
 ///    "comparison": null, or with --compare-dem {"dem", "demCellSizeM", "demWindows" (count),
 ///                  "demMeanGeomorphons": shares, "demMedianSpectralSlope",

@@ -33,6 +33,7 @@ struct ReliefWindow {
 /// The window figures of a raster.
 struct ReliefWindows {
   int cells = 0;                  ///< Window side, cells.
+  double cellSize = 0.0;          ///< Cell side of the raster the windows were taken from, m.
   std::vector<ReliefWindow> list; ///< Highest relief first.
   /// Mean of the windows' shares; NaN without windows.
   GeomorphonShares meanGeomorphons = noGeomorphonShares();
@@ -64,6 +65,13 @@ std::vector<WindowPlacement> selectReliefWindows(const HeightRaster& raster, int
 /// The heights of a window, north row first (as blind_set.py holds them), row-major.
 std::vector<double> windowHeights(const HeightRaster& raster, const WindowPlacement& placement,
                                   int cells);
+
+/// The raster resampled to cells of `cellSize` metres as blind_set.py does (scipy.ndimage.zoom
+/// by old/new cell, orders 1 and 0): round(n · old/new) cells per axis (half to even), output
+/// cell j sampling input position j·(n_in − 1)/(n_out − 1) on each axis, heights bilinearly.
+/// A cell is land when its nearest input cell and every input cell its height mixes are land
+/// (the script mixes NODATA values into heights there).
+HeightRaster resampleRaster(const HeightRaster& raster, double cellSize);
 
 /// Selects up to `count` windows of round(sizeKm · 1000 / cellSize) cells and measures their
 /// spectral slope and geomorphon shares (blind_set.py's figures()).
