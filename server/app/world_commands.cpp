@@ -10,7 +10,10 @@
 #include "strahler/quality/analysis_report.h"
 #include "strahler/quality/dem_file.h"
 #include "strahler/quality/flow_field.h"
+#include "strahler/quality/geomorphons.h"
+#include "strahler/quality/hack_law.h"
 #include "strahler/quality/relief.h"
+#include "strahler/quality/relief_windows.h"
 #include "strahler/quality/river_agreement.h"
 #include "strahler/quality/world_raster.h"
 #include "strahler/render/relief_image.h"
@@ -20,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <thread>
 #include <variant>
@@ -34,16 +38,30 @@ constexpr const char* kRenderUsage =
     "Draws a shaded-relief overview of the whole world with its rivers (PX: 64..8192,\n"
     "default 1600, along the longer side).\n";
 constexpr const char* kAnalyzeUsage =
-    "usage: strahler analyze WORLD.world [--cell-size M]\n"
-    "       strahler analyze --dem FILE [--cell-size M]\n"
+    "usage: strahler analyze WORLD.world [--cell-size M] [--window-km KM] [--windows N]\n"
+    "                        [--window-cell M] [--compare-dem FILE]\n"
+    "       strahler analyze --dem FILE [--cell-size M] [--window-km KM] [--windows N]\n"
+    "                        [--window-cell M]\n"
     "Checks that the terrain respects its water and prints JSON: the share of land cells\n"
     "(M metres, 5..1000, default 30) that drain to the sea or a lake after filling depressions\n"
     "shallower than 1 m (with rivers burnt in, and without), rises along river centrelines\n"
     "(tolerance 0.5 m), Horton's bifurcation and length ratios, and the relief figures of the\n"
     "terrain (slope-area concavity, slope percentiles, D8 confluences, drainage density,\n"
-    "dissection, agreement of D8 channels with the rivers, sinuosity by Rosgen type).\n"
-    "--dem: the relief figures of a real DEM instead: an ESRI ASCII grid (.asc; --cell-size\n"
-    "replaces its cellsize, e.g. for a grid in degrees) or any raster OpenImageIO reads\n"
+    "dissection, agreement of D8 channels with the rivers, sinuosity by Rosgen type,\n"
+    "geomorphon class shares over the land: lookup 360 m, flatness 1 degree) and Hack's\n"
+    "exponent h of the river graph (main-stream length L = c A^h against drainage area A).\n"
+    "Window figures, as ../shared/realism/blind_set.py computes them: the N (default 3)\n"
+    "highest-relief squares of KM km (default 7.5) wholly on land, at the raster's cell, each\n"
+    "with its geomorphon shares (cells at least the lookup from its edge) and the spectral\n"
+    "slope of its radially averaged power spectrum (wavelengths 4 cells to 2 km; larger means\n"
+    "smoother), then their mean shares and median spectral slope. --window-cell M resamples\n"
+    "the raster to M-metre cells for these (bilinearly, as the script's --cell does).\n"
+    "--compare-dem FILE adds the same window figures of a DEM (read as --dem reads it; give\n"
+    "--window-cell to compare at one cell), the geomorphon distance (half L1 of the mean\n"
+    "shares) and the spectral slope difference.\n"
+    "--dem: the relief figures of a real DEM instead: an ESRI ASCII grid (.asc; a grid in\n"
+    "degrees gets square cells of its latitude spacing, its columns resampled as blind_set.py\n"
+    "does; --cell-size replaces its cellsize instead) or any raster OpenImageIO reads\n"
     "(heights in metres; --cell-size M, metres > 0, required). NODATA cells count as outside.\n"
     "A world's raster may hold at most 60 million cells (up to about 7 GB); larger worlds need a\n"
     "larger --cell-size (e.g. 120 for 100,000 km²).\n";
@@ -165,35 +183,74 @@ int runTile(const std::vector<std::string>& raw) {
 
 namespace {
 
+/// Option `name`: a number in (0, `most`] of `unit`, or nothing when absent.
+base::Result<std::optional<double>> positiveNumber(const CliArgs& args, const std::string& name,
+                                                   double most, const std::string& unit) {
+  const std::optional<std::string> text = args.get(name);
+  if (!text)
+    return std::optional<double>();
+  double value = 0;
+  const char* end = text->data() + text->size();
+  const auto [ptr, ec] = std::from_chars(text->data(), end, value);
+  if (ec != std::errc() || ptr != end || !std::isfinite(value) || value <= 0 || value > most) {
+    char range[32];
+    std::snprintf(range, sizeof range, "%g", most);
+    return base::makeError(base::ErrorCode::kOutOfRange, name + " must be a number of " + unit +
+                                                             " in (0, " + range + "], not '" +
+                                                             *text + "'");
+  }
+  return std::optional<double>(value);
+}
+
+/// `--cell-size` of --dem mode: a positive number of metres, at most 100 km.
+base::Result<std::optional<double>> demCellSize(const CliArgs& args) {
+  return positiveNumber(args, "--cell-size", 1e5, "metres");
+}
+
+/// The window options: side in km and how many.
+struct WindowOptions {
+  double sizeKm = quality::kReliefWindowKm;
+  int count = quality::kReliefWindowCount;
+  std::optional<double> cellSize; ///< --window-cell: resample to this before taking windows.
+
+  /// The window figures of `raster`, resampled first when a window cell is set.
+  quality::ReliefWindows measure(const quality::HeightRaster& raster,
+                                 const quality::GeomorphonParams& params) const {
+    if (cellSize && std::abs(*cellSize - raster.cellSize) > 1e-6)
+      return quality::measureReliefWindows(quality::resampleRaster(raster, *cellSize), sizeKm,
+                                           count, params);
+    return quality::measureReliefWindows(raster, sizeKm, count, params);
+  }
+};
+
+base::Result<WindowOptions> windowOptions(const CliArgs& args) {
+  WindowOptions options;
+  STRAHLER_ASSIGN_OR_RETURN(const std::optional<double> km,
+                            positiveNumber(args, "--window-km", 1000.0, "km"));
+  STRAHLER_ASSIGN_OR_RETURN(const std::optional<long long> count, args.getInt("--windows", 0, 100));
+  STRAHLER_ASSIGN_OR_RETURN(options.cellSize, positiveNumber(args, "--window-cell", 1e5, "metres"));
+  options.sizeKm = km.value_or(options.sizeKm);
+  options.count = static_cast<int>(count.value_or(options.count));
+  return options;
+}
+
 /// The relief figures of `raster`, and those against the world's rivers when there is a world.
 quality::ReliefReport reliefReport(const quality::HeightRaster& raster,
-                                   const construction::World* world) {
+                                   const construction::World* world, const WindowOptions& windows) {
   quality::ReliefReport report;
   report.width = raster.width;
   report.height = raster.height;
   report.cellSize = raster.cellSize;
   const quality::FlowField flow = quality::computeFlowField(raster);
   report.terrain = quality::measureRelief(raster, flow);
+  report.geomorphons = quality::geomorphonShares(raster, report.geomorphonParams);
+  report.windowKm = windows.sizeKm;
+  report.windows = windows.measure(raster, report.geomorphonParams);
   if (world != nullptr) {
     report.network = quality::compareWithRivers(*world, raster, flow);
     report.drainingFractionUnburnt = quality::checkDrainage(raster, 1.0).drainingFraction;
   }
   return report;
-}
-
-/// `--cell-size` of --dem mode: a positive number of metres, at most 100 km.
-base::Result<std::optional<double>> demCellSize(const CliArgs& args) {
-  const std::optional<std::string> text = args.get("--cell-size");
-  if (!text)
-    return std::optional<double>();
-  double value = 0;
-  const char* end = text->data() + text->size();
-  const auto [ptr, ec] = std::from_chars(text->data(), end, value);
-  if (ec != std::errc() || ptr != end || !std::isfinite(value) || value <= 0 || value > 1e5)
-    return base::makeError(base::ErrorCode::kOutOfRange,
-                           "--cell-size must be a number of metres in (0, 100000], not '" + *text +
-                               "'");
-  return std::optional<double>(value);
 }
 
 int analyzeDem(const CliArgs& args) {
@@ -202,31 +259,53 @@ int analyzeDem(const CliArgs& args) {
   auto cellSize = demCellSize(args);
   if (!cellSize)
     return usageError(cellSize.error(), kAnalyzeUsage);
+  auto windows = windowOptions(args);
+  if (!windows)
+    return usageError(windows.error(), kAnalyzeUsage);
   const std::string path = args.get("--dem").value_or("");
   auto raster = quality::readDemFile(path, cellSize.value());
   if (!raster)
     return fail(raster.error());
-  std::puts(quality::demReportJson(path, reliefReport(raster.value(), nullptr)).c_str());
+  std::puts(
+      quality::demReportJson(path, reliefReport(raster.value(), nullptr, windows.value())).c_str());
   return 0;
 }
 
 } // namespace
 
 int runAnalyze(const std::vector<std::string>& raw) {
-  auto parsed = CliArgs::parse("analyze", raw, {"--cell-size", "--dem"}, {"--help", "-h"});
+  auto parsed = CliArgs::parse(
+      "analyze", raw,
+      {"--cell-size", "--dem", "--window-km", "--windows", "--window-cell", "--compare-dem"},
+      {"--help", "-h"});
   if (!parsed)
     return usageError(parsed.error(), kAnalyzeUsage);
   if (parsed.value().has("--help") || parsed.value().has("-h"))
     return printUsage(kAnalyzeUsage);
+  if (parsed.value().get("--dem") && parsed.value().get("--compare-dem"))
+    return usageError({base::ErrorCode::kInvalidInput, "--compare-dem needs a WORLD, not --dem"},
+                      kAnalyzeUsage);
   if (parsed.value().get("--dem"))
     return analyzeDem(parsed.value());
-  auto opened = openWorld("analyze", raw, {"--cell-size"}, kAnalyzeUsage);
+  auto opened = openWorld(
+      "analyze", raw, {"--cell-size", "--window-km", "--windows", "--window-cell", "--compare-dem"},
+      kAnalyzeUsage);
   if (auto* code = std::get_if<int>(&opened))
     return *code;
   WorldCommand& c = std::get<WorldCommand>(opened);
   auto cell = c.args.getInt("--cell-size", 5, 1000);
   if (!cell)
     return usageError(cell.error(), kAnalyzeUsage);
+  auto windows = windowOptions(c.args);
+  if (!windows)
+    return usageError(windows.error(), kAnalyzeUsage);
+  std::optional<quality::HeightRaster> reference;
+  if (const auto dem = c.args.get("--compare-dem")) {
+    auto read = quality::readDemFile(*dem, std::nullopt);
+    if (!read)
+      return fail(read.error());
+    reference = std::move(read).value();
+  }
   const construction::World world(std::move(c.world));
   const double cellSize = static_cast<double>(cell.value().value_or(30));
   if (const double cells = quality::worldRasterCells(world, cellSize); cells > kMaxAnalysisCells)
@@ -241,14 +320,20 @@ int runAnalyze(const std::vector<std::string>& raw) {
             ")"));
   quality::HeightRaster raster =
       quality::rasterizeWorld(world, cellSize, threadCount(), quality::RiverBurning::kNone);
-  const quality::ReliefReport relief = reliefReport(raster, &world);
+  quality::ReliefReport relief = reliefReport(raster, &world, windows.value());
+  if (reference)
+    relief.comparison = quality::compareReliefWindows(
+        relief.windows, c.args.get("--compare-dem").value_or(""), reference->cellSize,
+        windows.value().measure(*reference, relief.geomorphonParams));
   quality::burnRivers(world, raster);
   const quality::DrainageReport drainage = quality::checkDrainage(raster, 1.0);
   const quality::RiverProfileReport rivers = quality::checkRiversDescend(
       quality::riverCentrelines(world), [&](geometry::Vec2 p) { return world.height(p, 1.0); }, 5.0,
       0.5);
   const quality::HortonStatistics horton = quality::hortonStatistics(world.data().network);
-  std::puts(quality::analysisReportJson(drainage, horton, rivers, relief).c_str());
+  const quality::HackLaw hack =
+      quality::fitHackLaw(world.data().network, quality::networkDrainageAreasKm2(world));
+  std::puts(quality::analysisReportJson(drainage, horton, rivers, relief, hack).c_str());
   return 0;
 }
 

@@ -280,6 +280,21 @@ TEST(WorldCommands, InfoRenderAndAnalyzeAWorldFile) {
   // Rivers everywhere (issue 16): no land farther than 3 km from one.
   EXPECT_LE(relief["riverDistanceM"]["max"].get<double>(), 3000.0);
   EXPECT_EQ(relief["riverDistanceM"]["fartherThan3KmFraction"].get<double>(), 0.0);
+  // Geomorphon shares of the land, and of the 7.5 km windows of highest relief (issue 25).
+  double shareSum = 0.0;
+  for (const auto& [name, share] : relief["geomorphons"]["shares"].items())
+    shareSum += share.get<double>();
+  EXPECT_NEAR(shareSum, 1.0, 1e-9);
+  EXPECT_EQ(relief["windows"]["cells"].get<int>(), 250);
+  ASSERT_FALSE(relief["windows"]["list"].empty());
+  EXPECT_GT(relief["windows"]["medianSpectralSlope"].get<double>(), 2.0);
+  EXPECT_LT(relief["windows"]["medianSpectralSlope"].get<double>(), 7.0);
+  EXPECT_GT(relief["windows"]["meanGeomorphons"]["slope"].get<double>(), 0.0);
+  // Hack's law of the river graph.
+  EXPECT_GT(report["hack"]["nodes"]["points"].get<int>(), 100);
+  EXPECT_GT(report["hack"]["nodes"]["exponent"].get<double>(), 0.3);
+  EXPECT_LT(report["hack"]["nodes"]["exponent"].get<double>(), 1.2);
+  EXPECT_GT(report["hack"]["outlets"]["points"].get<int>(), 2);
 
   // Coarse samples, as large worlds are analysed: valleys two samples wide are still drawn, so
   // the land drains at 120 m too (primitives::riverFade).
@@ -288,6 +303,36 @@ TEST(WorldCommands, InfoRenderAndAnalyzeAWorldFile) {
   const auto coarseReport = nlohmann::json::parse(coarse.out);
   EXPECT_EQ(coarseReport["relief"]["raster"]["cellSizeM"].get<double>(), 120.0);
   EXPECT_GE(coarseReport["drainage"]["drainingFractionUnburnt"].get<double>(), 0.99);
+  // Window figures beside a DEM's (80 x 80 cells of 30 m of ridges and valleys), 2 km windows.
+  std::ostringstream grid;
+  grid << "ncols 80\nnrows 80\nxllcorner 0\nyllcorner 0\ncellsize 30\n";
+  for (int row = 0; row < 80; ++row) {
+    for (int col = 0; col < 80; ++col)
+      grid << 500.0 + 80.0 * std::sin(col * 0.3) * std::cos(row * 0.2) + 2.0 * col << ' ';
+    grid << '\n';
+  }
+  const fs::path dem = writeScratch("ridges.asc", grid.str());
+  const ProcessRun compared = strahler(
+      "analyze " + world.string() + " --cell-size 120 --window-km 2 --compare-dem " + dem.string());
+  ASSERT_EQ(compared.exitCode, 0) << compared.err;
+  const auto comparedRelief = nlohmann::json::parse(compared.out)["relief"];
+  const auto& comparison = comparedRelief["comparison"];
+  EXPECT_EQ(comparison["dem"], dem.string());
+  EXPECT_EQ(comparison["demCellSizeM"].get<double>(), 30.0);
+  EXPECT_EQ(comparison["demWindows"].get<int>(), 1);
+  double distance = 0.0;
+  for (const auto& [name, share] : comparison["demMeanGeomorphons"].items())
+    distance += std::abs(share.get<double>() -
+                         comparedRelief["windows"]["meanGeomorphons"][name].get<double>());
+  EXPECT_NEAR(comparison["geomorphonDistance"].get<double>(), distance / 2.0, 1e-12);
+  EXPECT_NEAR(comparison["spectralSlopeDifference"].get<double>(),
+              comparedRelief["windows"]["medianSpectralSlope"].get<double>() -
+                  comparison["demMedianSpectralSlope"].get<double>(),
+              1e-12);
+  EXPECT_TRUE(relief["comparison"].is_null()) << "null without --compare-dem";
+  EXPECT_EQ(strahler("analyze " + world.string() + " --compare-dem /nonexistent.asc").exitCode, 1);
+  EXPECT_EQ(strahler("analyze --dem " + dem.string() + " --compare-dem " + dem.string()).exitCode,
+            2);
   // A raster too large for memory is refused with the cell size that fits.
   const ProcessRun tooFine = strahler("analyze " + world.string() + " --cell-size 5");
   EXPECT_EQ(tooFine.exitCode, 1);
@@ -315,6 +360,27 @@ TEST(WorldCommands, AnalyzeADemPrintsItsReliefFigures) {
   EXPECT_TRUE(relief["channelsNearRiversFraction"].is_null());
   EXPECT_TRUE(relief["sinuosity"]["E"].is_null());
   EXPECT_FALSE(report.contains("drainage"));
+
+  // One 2 km window (40 cells) wholly on land, beside the NODATA corner; 26 × 26 interior cells
+  // (7 cells of lookup from each edge), of which the axis row looks up 5 ways and down 3 (a
+  // hollow) and the rest is plain slope. blind_set.py gives the same on this grid.
+  const ProcessRun windowed =
+      strahler("analyze --dem " + dem.string() + " --window-km 2 --windows 2");
+  ASSERT_EQ(windowed.exitCode, 0) << windowed.err;
+  const auto windows = nlohmann::json::parse(windowed.out)["relief"]["windows"];
+  EXPECT_EQ(windows["cells"], 40);
+  ASSERT_EQ(windows["list"].size(), 1u);
+  EXPECT_EQ(windows["list"][0]["row"], 0);
+  EXPECT_EQ(windows["list"][0]["col"], 20);
+  EXPECT_NEAR(windows["meanGeomorphons"]["hollow"].get<double>(), 1.0 / 26.0, 1e-12);
+  EXPECT_NEAR(windows["meanGeomorphons"]["slope"].get<double>(), 25.0 / 26.0, 1e-12);
+  EXPECT_TRUE(relief["windows"]["list"].empty()) << "no 7.5 km window in 3 km";
+  const ProcessRun resampled =
+      strahler("analyze --dem " + dem.string() + " --window-km 2 --window-cell 100");
+  ASSERT_EQ(resampled.exitCode, 0) << resampled.err;
+  const auto coarseWindows = nlohmann::json::parse(resampled.out)["relief"]["windows"];
+  EXPECT_EQ(coarseWindows["cellSizeM"], 100.0);
+  EXPECT_EQ(coarseWindows["cells"], 20);
 
   const ProcessRun scaled = strahler("analyze --dem=" + dem.string() + " --cell-size 100");
   ASSERT_EQ(scaled.exitCode, 0) << scaled.err;
@@ -370,6 +436,8 @@ TEST(WorldCommands, AnalyzeRejectsBadDems) {
   EXPECT_EQ(strahler("analyze --dem " + truncated.string() + " --cell-size abc").exitCode, 2);
   EXPECT_EQ(strahler("analyze --dem " + truncated.string() + " --cell-size -5").exitCode, 2);
   EXPECT_EQ(strahler("analyze --dem").exitCode, 2);
+  EXPECT_EQ(strahler("analyze --dem " + truncated.string() + " --window-km 0").exitCode, 2);
+  EXPECT_EQ(strahler("analyze --dem " + truncated.string() + " --windows 101").exitCode, 2);
 }
 
 TEST(WorldCommands, RejectDamagedOrMissingWorldFiles) {

@@ -55,6 +55,62 @@ Json riversJson(const RiverProfileReport& report) {
   return json;
 }
 
+Json hackFitJson(const HackFit& fit) {
+  return {{"exponent", number(fit.exponent)},
+          {"coefficient", number(fit.coefficient)},
+          {"r2", number(fit.r2)},
+          {"points", fit.points}};
+}
+
+Json hackJson(const HackLaw& hack) {
+  Json json = Json::object();
+  json["definition"] = "L = c A^h, least squares of log10 L on log10 A; L: km along the river "
+                       "graph from a node to its farthest source; A: km2 of the node's block and "
+                       "every block upstream; nodes: every node with L > 0; outlets: the mouths";
+  json["nodes"] = hackFitJson(hack.nodes);
+  json["outlets"] = hackFitJson(hack.outlets);
+  return json;
+}
+
+Json sharesJson(const GeomorphonShares& shares) {
+  Json json = Json::object();
+  for (std::size_t c = 0; c < kGeomorphonCount; ++c)
+    json[kGeomorphonNames[c]] = number(shares[c]);
+  return json;
+}
+
+Json windowsJson(const ReliefReport& relief) {
+  Json list = Json::array();
+  for (const ReliefWindow& w : relief.windows.list)
+    list.push_back({{"row", w.placement.row},
+                    {"col", w.placement.col},
+                    {"reliefM", number(w.placement.reliefM)},
+                    {"spectralSlope", number(w.spectralSlope)},
+                    {"geomorphons", sharesJson(w.geomorphons)}});
+  Json json = Json::object();
+  json["sizeKm"] = number(relief.windowKm);
+  json["cellSizeM"] = number(relief.windows.cellSize);
+  json["cells"] = relief.windows.cells;
+  json["meanGeomorphons"] = sharesJson(relief.windows.meanGeomorphons);
+  json["medianSpectralSlope"] = number(relief.windows.medianSpectralSlope);
+  json["list"] = std::move(list);
+  return json;
+}
+
+Json comparisonJson(const std::optional<WindowComparison>& comparison) {
+  if (!comparison)
+    return nullptr;
+  Json json = Json::object();
+  json["dem"] = comparison->dem;
+  json["demCellSizeM"] = number(comparison->demCellSize);
+  json["demWindows"] = comparison->demWindows.list.size();
+  json["demMeanGeomorphons"] = sharesJson(comparison->demWindows.meanGeomorphons);
+  json["demMedianSpectralSlope"] = number(comparison->demWindows.medianSpectralSlope);
+  json["geomorphonDistance"] = number(comparison->geomorphonDistance);
+  json["spectralSlopeDifference"] = number(comparison->spectralSlopeDifference);
+  return json;
+}
+
 Json reliefJson(const ReliefReport& relief) {
   const ReliefFigures& t = relief.terrain;
   const NetworkReliefFigures& n = relief.network;
@@ -88,16 +144,23 @@ Json reliefJson(const ReliefReport& relief) {
                        {"E", number(n.sinuosityE)},
                        {"D", number(n.sinuosityD)},
                        {"D-delta", number(n.sinuosityDelta)}};
+  json["geomorphons"] = {{"lookupM", number(relief.geomorphonParams.lookupM)},
+                         {"flatDeg", number(relief.geomorphonParams.flatDeg)},
+                         {"shares", sharesJson(relief.geomorphons)}};
+  json["windows"] = windowsJson(relief);
+  json["comparison"] = comparisonJson(relief.comparison);
   return json;
 }
 
 } // namespace
 
 std::string analysisReportJson(const DrainageReport& drainage, const HortonStatistics& horton,
-                               const RiverProfileReport& rivers, const ReliefReport& relief) {
+                               const RiverProfileReport& rivers, const ReliefReport& relief,
+                               const HackLaw& hack) {
   Json json = Json::object();
   json["drainage"] = drainageJson(drainage, relief.drainingFractionUnburnt);
   json["horton"] = hortonJson(horton);
+  json["hack"] = hackJson(hack);
   json["rivers"] = riversJson(rivers);
   json["relief"] = reliefJson(relief);
   return json.dump(2);

@@ -249,7 +249,42 @@ base::Result<HeightRaster> readImageDem(const std::string& path, double cellSize
   return r;
 }
 
+/// Metres per degree of latitude (blind_set.py's EARTH / 360).
+constexpr double kMetresPerDegree = 40075016.686 / 360.0;
+
 } // namespace
+
+HeightRaster squareDegreeCells(const HeightRaster& grid) {
+  const double half = 0.5 * grid.cellSize;
+  const double latitude = grid.origin.y - half + grid.cellSize * grid.height / 2.0;
+  const double dy = grid.cellSize * kMetresPerDegree;
+  const double zoom = std::cos(latitude * 0.017453292519943295); // dx / dy
+  HeightRaster r;
+  r.width = std::max(1, int(std::nearbyint(grid.width * zoom))); // numpy rounds half to even
+  r.height = grid.height;
+  r.cellSize = dy;
+  r.origin = {(grid.origin.x - half) * dy * zoom / grid.cellSize + 0.5 * dy,
+              (grid.origin.y - half) * kMetresPerDegree + 0.5 * dy};
+  const std::size_t w = std::size_t(r.width), gw = std::size_t(grid.width);
+  r.heights.resize(w * std::size_t(r.height));
+  r.cellClass.resize(r.heights.size());
+  // scipy.ndimage.zoom's mapping: output column j samples input column j·(in − 1)/(out − 1);
+  // heights linearly (order 1), the cell's class from the nearest column (order 0).
+  const double scale = r.width > 1 ? double(grid.width - 1) / double(r.width - 1) : 0.0;
+  for (std::size_t j = 0; j < w; ++j) {
+    const double at = double(j) * scale;
+    const std::size_t left = std::min(std::size_t(at), gw - 1), right = std::min(left + 1, gw - 1);
+    const double t = at - double(left);
+    const std::size_t nearest = std::min(std::size_t(std::floor(at + 0.5)), gw - 1);
+    for (std::size_t y = 0; y < std::size_t(r.height); ++y) {
+      const std::size_t row = y * gw;
+      r.heights[y * w + j] = float((1.0 - t) * double(grid.heights[row + left]) +
+                                   t * double(grid.heights[row + right]));
+      r.cellClass[y * w + j] = grid.cellClass[row + nearest];
+    }
+  }
+  return r;
+}
 
 base::Result<HeightRaster> readEsriAsciiGrid(const std::string& path) {
   try {
@@ -269,6 +304,8 @@ base::Result<HeightRaster> readDemFile(const std::string& path, std::optional<do
     STRAHLER_ASSIGN_OR_RETURN(HeightRaster r, readEsriAsciiGrid(path));
     if (cellSize)
       r.cellSize = *cellSize;
+    else if (r.cellSize < kDegreeCellLimit)
+      return squareDegreeCells(r);
     return r;
   }
   if (!cellSize)

@@ -121,6 +121,49 @@ TEST(AnalysisReport, ADemReportHasTheSameReliefKeysAllNullWithoutAWorld) {
   EXPECT_DOUBLE_EQ(relief.at("dissection").get<double>(), 5.75);
 }
 
+TEST(AnalysisReport, GeomorphonsWindowsAndHack) {
+  ReliefReport relief = sampleRelief();
+  relief.geomorphons.fill(0.0);
+  relief.geomorphons[std::size_t(Geomorphon::kSlope)] = 0.75;
+  relief.geomorphons[std::size_t(Geomorphon::kHollow)] = 0.25;
+  relief.windowKm = 5.0;
+  relief.windows.cells = 167;
+  ReliefWindow window;
+  window.placement = {300, 220, 1159.0};
+  window.spectralSlope = 4.5;
+  window.geomorphons = relief.geomorphons;
+  relief.windows.list = {window};
+  relief.windows.meanGeomorphons = relief.geomorphons;
+  relief.windows.medianSpectralSlope = 4.5;
+  HackLaw hack;
+  hack.nodes = {0.75, 0.5, 0.9, 2000};
+  const auto json = nlohmann::json::parse(
+      analysisReportJson(sampleDrainage(), sampleHorton(), sampleRivers(), relief, hack));
+  const auto& shares = json.at("relief").at("geomorphons").at("shares");
+  EXPECT_EQ(shares.size(), kGeomorphonCount);
+  EXPECT_EQ(shares.begin().key(), "flat") << "in the classes' order";
+  EXPECT_DOUBLE_EQ(shares.at("hollow").get<double>(), 0.25);
+  EXPECT_DOUBLE_EQ(json.at("relief").at("geomorphons").at("lookupM").get<double>(), 360.0);
+  const auto& windows = json.at("relief").at("windows");
+  EXPECT_DOUBLE_EQ(windows.at("sizeKm").get<double>(), 5.0);
+  EXPECT_EQ(windows.at("cells"), 167);
+  EXPECT_DOUBLE_EQ(windows.at("medianSpectralSlope").get<double>(), 4.5);
+  ASSERT_EQ(windows.at("list").size(), 1u);
+  EXPECT_EQ(windows.at("list")[0].at("row"), 300);
+  EXPECT_EQ(windows.at("list")[0].at("col"), 220);
+  EXPECT_DOUBLE_EQ(windows.at("list")[0].at("geomorphons").at("slope").get<double>(), 0.75);
+  EXPECT_EQ(
+      json.at("hack").at("nodes"),
+      (nlohmann::json{{"exponent", 0.75}, {"coefficient", 0.5}, {"r2", 0.9}, {"points", 2000}}));
+  EXPECT_TRUE(json.at("hack").at("outlets").at("exponent").is_null());
+  EXPECT_EQ(json.at("hack").at("outlets").at("points"), 0);
+  // Without measurements the shares are null.
+  const auto bare = nlohmann::json::parse(
+      analysisReportJson(sampleDrainage(), sampleHorton(), sampleRivers(), sampleRelief()));
+  EXPECT_TRUE(bare.at("relief").at("geomorphons").at("shares").at("slope").is_null());
+  EXPECT_TRUE(bare.at("relief").at("windows").at("list").empty());
+}
+
 TEST(AnalysisReport, NotANumberBecomesNull) {
   HortonStatistics chain;
   chain.streamCount = {0, 1};

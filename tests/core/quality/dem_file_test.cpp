@@ -108,6 +108,35 @@ INSTANTIATE_TEST_SUITE_P(
       return "case" + std::to_string(param.index);
     });
 
+TEST(DemFile, AGridInDegreesIsResampledToSquareMetricCells) {
+  // 6 x 2 cells of 0.001° centred on 60° N, where a degree of longitude is half one of
+  // latitude: 3 columns of 111.3 m, sampling input columns 0, 2.5 and 5; the NODATA cell in
+  // input column 3 is the nearest to output column 1 in the north row.
+  const std::string path = writeText("degrees.asc", "ncols 6\nnrows 2\nxllcorner 10\n"
+                                                    "yllcorner 59.999\ncellsize 0.001\n"
+                                                    "NODATA_value -9999\n"
+                                                    "0 10 20 -9999 40 50\n"
+                                                    "100 110 120 130 140 150\n");
+  const auto raster = readDemFile(path, std::nullopt);
+  ASSERT_TRUE(raster.ok()) << raster.error().message;
+  const HeightRaster& r = raster.value();
+  EXPECT_EQ(r.width, 3);
+  EXPECT_EQ(r.height, 2);
+  EXPECT_NEAR(r.cellSize, 111.3195, 1e-3);
+  // South row (the file's second) first.
+  EXPECT_FLOAT_EQ(r.heights[0], 100.0f);
+  EXPECT_FLOAT_EQ(r.heights[1], 125.0f);
+  EXPECT_FLOAT_EQ(r.heights[2], 150.0f);
+  EXPECT_EQ(r.cellClass[1], std::uint8_t(CellClass::kLand));
+  EXPECT_EQ(r.cellClass[4], std::uint8_t(CellClass::kSea)) << "nearest to the NODATA cell";
+  EXPECT_EQ(r.cellClass[5], std::uint8_t(CellClass::kLand));
+  // A given cell size keeps the grid as it is.
+  const auto given = readDemFile(path, 50.0);
+  ASSERT_TRUE(given.ok());
+  EXPECT_EQ(given.value().width, 6);
+  EXPECT_EQ(given.value().cellSize, 50.0);
+}
+
 TEST(DemFile, AMissingFileIsNotFound) {
   const auto raster = readDemFile("/nonexistent/dem.asc", std::nullopt);
   ASSERT_FALSE(raster.ok());

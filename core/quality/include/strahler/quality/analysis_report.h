@@ -1,12 +1,16 @@
 #pragma once
 
 #include "strahler/quality/drainage.h"
+#include "strahler/quality/geomorphons.h"
+#include "strahler/quality/hack_law.h"
 #include "strahler/quality/horton.h"
 #include "strahler/quality/relief.h"
+#include "strahler/quality/relief_windows.h"
 #include "strahler/quality/river_agreement.h"
 #include "strahler/quality/river_profile.h"
 
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace strahler::quality {
@@ -20,6 +24,13 @@ struct ReliefReport {
   NetworkReliefFigures network; ///< Figures against the world's rivers (NaN for a DEM).
   /// checkDrainage's drainingFraction on the unburnt raster; NaN when not measured.
   double drainingFractionUnburnt = std::numeric_limits<double>::quiet_NaN();
+  GeomorphonParams geomorphonParams; ///< Parameters of the two geomorphon figures.
+  /// geomorphonShares over every land cell; NaN when not measured.
+  GeomorphonShares geomorphons = noGeomorphonShares();
+  double windowKm = kReliefWindowKm; ///< Side of the relief windows, km.
+  ReliefWindows windows;             ///< measureReliefWindows of the raster.
+  /// With `analyze WORLD --compare-dem FILE`: the windows against that DEM's.
+  std::optional<WindowComparison> comparison;
 };
 
 /// The checks as one JSON object, keys always present and in this order (NaN and
@@ -29,11 +40,14 @@ struct ReliefReport {
 ///                 its lowest cell, when there is one), "fillToleranceM"},
 ///    "horton": {"streamCount": {"1": N_1, "2": N_2, ...},
 ///               "meanStreamLengthM": {"1": L_1, ...}, "bifurcationRatio", "lengthRatio"},
+///    "hack": {"definition", "nodes": fit, "outlets": fit} with fit = {"exponent",
+///             "coefficient", "r2", "points"} (hack_law.h; L in km, A in km²),
 ///    "rivers": {"samples", "violations", "worstRiseM", "worstAt": [x, y]},
 ///    "relief": see reliefJson below}
 /// Orders run from 1 to the highest order, in numeric order. Pretty-printed, 2-space indent.
 std::string analysisReportJson(const DrainageReport& drainage, const HortonStatistics& horton,
-                               const RiverProfileReport& rivers, const ReliefReport& relief);
+                               const RiverProfileReport& rivers, const ReliefReport& relief,
+                               const HackLaw& hack = {});
 
 /// `{"dem": path, "relief": {...}}` for `strahler analyze --dem`, with the relief object:
 ///   {"raster": {"width", "height", "cellSizeM", "landCells"},
@@ -43,8 +57,16 @@ std::string analysisReportJson(const DrainageReport& drainage, const HortonStati
 ///    "dissection", "highestM", "channelsNearRiversFraction", "riversNearChannelsFraction",
 ///    "networkConfluences3PlusFraction",
 ///    "riverDistanceM": {"p99", "max", "fartherThan3KmFraction", "farthestAt": [x, y]},
-///    "sinuosity": {"B", "E", "D", "D-delta"}}
-/// (definitions in relief.h and river_agreement.h; the last five are null without a world).
+///    "sinuosity": {"B", "E", "D", "D-delta"},
+///    "geomorphons": {"lookupM", "flatDeg", "shares": {"flat", "peak", ..., "pit"}},
+///    "windows": {"sizeKm", "cellSizeM", "cells", "meanGeomorphons": shares, "medianSpectralSlope",
+///                "list": [{"row", "col", "reliefM", "spectralSlope", "geomorphons": shares}]},
+///    "comparison": null, or with --compare-dem {"dem", "demCellSizeM", "demWindows" (count),
+///                  "demMeanGeomorphons": shares, "demMedianSpectralSlope",
+///                  "geomorphonDistance", "spectralSlopeDifference"}}
+/// (definitions in relief.h, river_agreement.h, geomorphons.h, spectral_slope.h and
+/// relief_windows.h; the network figures are null without a world; "windows" rows count from
+/// the north edge, as blind_set.py's).
 std::string demReportJson(const std::string& path, const ReliefReport& relief);
 
 } // namespace strahler::quality
