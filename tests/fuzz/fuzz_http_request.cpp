@@ -51,8 +51,8 @@ bool route(const strahler::http::Request& request, unsigned version, bool keepAl
       response.close = true;
     } else {
       response.headers = {{"Content-Type", "application/octet-stream"},
-                          {"X-Tile-Key", tile.value().key}}; // client bytes in a header
-      response.body = strahler::app::canonicalFormatName(tile.value().request.format);
+                          {"X-Tile-Key", strahler::app::tileKey(tile.value())}}; // client bytes
+      response.body = strahler::app::canonicalFormatName(tile.value().format);
     }
   } else if (s.size() >= 2 && s[0] == "worlds") {
     response = strahler::http::errorResponse(404, "unknown world '" + s[1].substr(0, 64) + "'");
