@@ -1,9 +1,9 @@
 #pragma once
 
-#include "http_types.h"
 #include "worker_pool.h"
 
 #include "strahler/construction/world_data.h"
+#include "strahler/http/http_types.h"
 
 #include <functional>
 #include <future>

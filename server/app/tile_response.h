@@ -1,8 +1,9 @@
 #pragma once
 
-#include "http_types.h"
 #include "tile_cache.h"
 #include "tile_renderer.h"
+
+#include "strahler/http/http_types.h"
 
 #include <memory>
 #include <string>

@@ -1,6 +1,5 @@
 #pragma once
 
-#include "http_types.h"
 #include "memory_trimmer.h"
 #include "metrics.h"
 #include "route_parser.h"
@@ -9,6 +8,7 @@
 #include "worker_pool.h"
 
 #include "strahler/construction/world_data.h"
+#include "strahler/http/http_types.h"
 
 #include <chrono>
 #include <functional>

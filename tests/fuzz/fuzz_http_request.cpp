@@ -1,5 +1,5 @@
 // libFuzzer harness: the bytes a client sends on one connection, handled as
-// server/http/session.cpp handles them: Beast's header parser with the server's limits, the
+// server/http/src/session.cpp handles them: Beast's header parser with the server's limits, the
 // protocol rules (checkRequest / checkParseError), the response as written (toWireResponse,
 // appendHead), and for forwarded requests the router's parsers (parseTarget, parseTileRoute)
 // with JSON error answers quoting the client's bytes. Pipelined requests are followed while the

@@ -1,9 +1,10 @@
 #pragma once
 
-#include "http_types.h"
 #include "net.h"
 #include "server_state.h"
 #include "wire_response.h"
+
+#include "strahler/http/http_types.h"
 
 #include <boost/beast/core/flat_buffer.hpp>
 #include <boost/optional/optional.hpp>
