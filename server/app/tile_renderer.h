@@ -12,17 +12,17 @@ namespace strahler::app {
 
 /// A finished tile with what it cost.
 struct RenderedTile {
-  std::string bytes;
-  std::string mimeType;
+  std::string bytes;       ///< The encoded tile.
+  std::string mimeType;    ///< Its media type (image/png, model/gltf-binary, ...).
   double evaluateMs = 0.0; ///< Sampling the terrain.
   double encodeMs = 0.0;   ///< Turning the samples into bytes.
-  tiling::TileStats stats;
+  tiling::TileStats stats; ///< What the evaluation touched (blocks, primitives).
 };
 
 /// What a renderer reads: the world's terrain evaluator and the pyramid of the request.
 struct RenderContext {
-  const tiling::TileEvaluator& evaluator;
-  const tiling::TileScheme& scheme;
+  const tiling::TileEvaluator& evaluator; ///< Heights of the world at any sample grid.
+  const tiling::TileScheme& scheme;       ///< The pyramid of the request (its grids and frames).
 };
 
 /// Makes the bytes of one kind of tile (TileKind). It knows nothing of transports or caches:
