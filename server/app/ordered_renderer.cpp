@@ -73,7 +73,7 @@ base::Result<std::string> OrderedRenderer::render(std::uint64_t id) const {
   TileRequest request;
   request.tile = {c.z, c.x, c.y};
   request.format = job_.format;
-  request.size = job_.size;
+  request.options.size = job_.size;
   try {
     STRAHLER_ASSIGN_OR_RETURN(RenderedTile tile, service_.render(request));
     return std::move(tile.bytes);

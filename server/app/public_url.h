@@ -1,8 +1,7 @@
 #pragma once
 
-#include "http_types.h"
-
 #include "strahler/base/result.h"
+#include "strahler/http/http_types.h"
 
 #include <string>
 

@@ -2,7 +2,6 @@
 
 #include "cli_args.h"
 #include "command_support.h"
-#include "http_server.h"
 #include "public_url.h"
 #include "terminal_progress.h"
 #include "tile_server.h"
@@ -10,6 +9,7 @@
 #include "world_limits.h"
 #include "world_loader.h"
 
+#include "strahler/http/http_server.h"
 #include "strahler/store/world_file.h"
 
 #include <chrono>

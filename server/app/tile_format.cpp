@@ -22,8 +22,39 @@ base::Result<TileFormat> parseTileFormat(const std::string& name) {
                              "' (use png, terrarium, png16, tif, exr, drc or glb)");
 }
 
+const char* canonicalFormatName(TileFormat format) noexcept {
+  switch (format) {
+  case TileFormat::kTerrainRgb:
+    return "png";
+  case TileFormat::kTerrarium:
+    return "terrarium";
+  case TileFormat::kPng16:
+    return "png16";
+  case TileFormat::kTiff:
+    return "tif";
+  case TileFormat::kExr:
+    return "exr";
+  case TileFormat::kDraco:
+    return "drc";
+  case TileFormat::kGlb:
+    return "glb";
+  }
+  return "png";
+}
+
+TileKind tileKind(TileFormat format) noexcept {
+  return format == TileFormat::kDraco || format == TileFormat::kGlb ? TileKind::kMesh
+                                                                    : TileKind::kHeightmap;
+}
+
 bool isMeshFormat(TileFormat format) noexcept {
-  return format == TileFormat::kDraco || format == TileFormat::kGlb;
+  return tileKind(format) == TileKind::kMesh;
+}
+
+TileSizeRange tileSizeRange(TileKind kind) noexcept {
+  if (kind == TileKind::kMesh)
+    return {TileSizes::kMeshMin, TileSizes::kMeshMax, TileSizes::kMeshDefault};
+  return {TileSizes::kRasterMin, TileSizes::kRasterMax, TileSizes::kRasterDefault};
 }
 
 } // namespace strahler::app

@@ -3,7 +3,6 @@
 // so that parsing a request needs none of the terrain code (the fuzz harnesses build it alone).
 
 #include "strahler/base/result.h"
-#include "strahler/tiling/tile_scheme.h"
 
 #include <string>
 
@@ -12,25 +11,40 @@ namespace strahler::app {
 /// Every tile format strahler serves.
 enum class TileFormat { kTerrainRgb, kTerrarium, kPng16, kTiff, kExr, kDraco, kGlb };
 
+/// The kind of data a tile carries; each kind has one renderer (tile_renderer.h), and a
+/// format is one encoding of one kind.
+enum class TileKind {
+  kHeightmap, ///< A raster of heights (png, terrarium, png16, tif, exr).
+  kMesh,      ///< A triangle mesh with skirts (drc, glb).
+};
+
 /// Size bounds: raster tiles have size² pixels, mesh tiles size² quads ((size+1)² vertices).
 struct TileSizes {
   static constexpr int kRasterMin = 16, kRasterMax = 1024, kRasterDefault = 256;
   static constexpr int kMeshMin = 4, kMeshMax = 256, kMeshDefault = 64;
 };
 
-/// One tile to make.
-struct TileRequest {
-  tiling::SchemeKind scheme = tiling::SchemeKind::kWebMercator;
-  tiling::TileId tile;
-  TileFormat format = TileFormat::kTerrainRgb;
-  int size = 0; ///< 0: the format's default.
+/// The sizes one kind of tile accepts, and the one it gets when none is asked for.
+struct TileSizeRange {
+  int min = 0;         ///< Smallest size.
+  int max = 0;         ///< Largest size.
+  int defaultSize = 0; ///< The size of a request that names none.
 };
 
 /// Parses a format name as used in URLs and on the command line: png (Terrain-RGB),
 /// terrarium, png16, tif, exr, drc, glb.
 base::Result<TileFormat> parseTileFormat(const std::string& name);
 
+/// The name of `format` in URLs (png, terrarium, png16, tif, exr, drc, glb).
+const char* canonicalFormatName(TileFormat format) noexcept;
+
+/// The kind of tile `format` encodes.
+TileKind tileKind(TileFormat format) noexcept;
+
 /// True for the mesh formats (drc, glb).
 bool isMeshFormat(TileFormat format) noexcept;
+
+/// The sizes tiles of `kind` accept (TileSizes).
+TileSizeRange tileSizeRange(TileKind kind) noexcept;
 
 } // namespace strahler::app

@@ -2,8 +2,6 @@
 
 #include "route_parser.h"
 
-#include <charconv>
-
 namespace strahler::app {
 namespace {
 
@@ -20,38 +18,18 @@ base::Result<int> tileSize(const std::map<std::string, std::string>& query, Tile
   if (!v)
     return badTile("size " + v.error().message);
   const int size = static_cast<int>(v.value());
-  const bool mesh = isMeshFormat(format);
-  const int lo = mesh ? TileSizes::kMeshMin : TileSizes::kRasterMin;
-  const int hi = mesh ? TileSizes::kMeshMax : TileSizes::kRasterMax;
-  if (size < lo || size > hi)
-    return badTile("size must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return size == (mesh ? TileSizes::kMeshDefault : TileSizes::kRasterDefault) ? 0 : size;
+  const TileSizeRange range = tileSizeRange(tileKind(format));
+  if (size < range.min || size > range.max)
+    return badTile("size must be in [" + std::to_string(range.min) + ", " +
+                   std::to_string(range.max) + "]");
+  return size == range.defaultSize ? 0 : size;
 }
 
 } // namespace
 
-const char* canonicalFormatName(TileFormat format) noexcept {
-  switch (format) {
-  case TileFormat::kTerrainRgb:
-    return "png";
-  case TileFormat::kTerrarium:
-    return "terrarium";
-  case TileFormat::kPng16:
-    return "png16";
-  case TileFormat::kTiff:
-    return "tif";
-  case TileFormat::kExr:
-    return "exr";
-  case TileFormat::kDraco:
-    return "drc";
-  case TileFormat::kGlb:
-    return "glb";
-  }
-  return "png";
-}
-
-base::Result<TileRoute> parseTileRoute(const std::string& world, const std::vector<std::string>& s,
-                                       const std::map<std::string, std::string>& query) {
+base::Result<TileRequest> parseTileRoute(const std::string& world,
+                                         const std::vector<std::string>& s,
+                                         const std::map<std::string, std::string>& query) {
   for (const auto& [name, value] : query)
     if (name != "size" && name != "encoding")
       return badTile("unknown query parameter '" + name.substr(0, 64) +
@@ -72,24 +50,13 @@ base::Result<TileRoute> parseTileRoute(const std::string& world, const std::vect
     if (e->second == "terrarium")
       formatName = "terrarium";
   }
-  STRAHLER_ASSIGN_OR_RETURN(const TileFormat format, parseTileFormat(formatName));
-  STRAHLER_ASSIGN_OR_RETURN(const int size, tileSize(query, format));
-  const tiling::SchemeKind scheme =
-      s[2] == "local" ? tiling::SchemeKind::kLocal : tiling::SchemeKind::kWebMercator;
-  TileRoute route{{scheme, {static_cast<int>(z.value()), x.value(), y.value()}, format, size}, {}};
-  char number[24];
-  auto append = [&](std::int64_t v) {
-    route.key.append(number, std::to_chars(number, number + sizeof number, v).ptr);
-    route.key.push_back('|');
-  };
-  route.key.reserve(world.size() + 48);
-  route.key.append(world).append(s[2] == "local" ? "|local|" : "|tiles|");
-  append(z.value());
-  append(x.value());
-  append(y.value());
-  route.key.append(canonicalFormatName(format)).push_back('|');
-  route.key.append(number, std::to_chars(number, number + sizeof number, size).ptr);
-  return route;
+  TileRequest request;
+  STRAHLER_ASSIGN_OR_RETURN(request.format, parseTileFormat(formatName));
+  STRAHLER_ASSIGN_OR_RETURN(request.options.size, tileSize(query, request.format));
+  request.world = world;
+  request.scheme = s[2] == "local" ? tiling::SchemeKind::kLocal : tiling::SchemeKind::kWebMercator;
+  request.tile = {static_cast<int>(z.value()), x.value(), y.value()};
+  return request;
 }
 
 } // namespace strahler::app

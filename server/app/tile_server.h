@@ -1,28 +1,23 @@
 #pragma once
 
-#include "http_types.h"
 #include "memory_trimmer.h"
 #include "metrics.h"
+#include "route_parser.h"
+#include "router.h"
 #include "tile_cache.h"
-#include "tile_service.h"
 #include "worker_pool.h"
 
 #include "strahler/construction/world_data.h"
+#include "strahler/http/http_types.h"
 
 #include <chrono>
 #include <functional>
-#include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace strahler::app {
-
-/// A world's rivers.geojson, as text and gzipped.
-struct RiversText {
-  std::shared_ptr<const std::string> plain; ///< The GeoJSON.
-  std::shared_ptr<const std::string> gzip;  ///< The same, one gzip member.
-};
 
 /// Settings of the tile server's work side.
 struct TileServerOptions {
@@ -41,9 +36,11 @@ struct TileServerOptions {
 
 /// The endpoints of DESIGN.md's server contract over a set of worlds: /, /worlds,
 /// /worlds/{id}, tilejson.json, tiles (Web Mercator and local), rivers.geojson, /health and
-/// /metrics. Tiles are computed on a bounded worker pool through a single-flight LRU cache;
-/// everything else is answered on the calling (I/O) thread (rivers.geojson on a worker while
-/// it is still being written). Thread-safe.
+/// /metrics. It routes (router.h) and owns the shared work side; each endpoint's answer is made
+/// in its own file. Tiles are computed on a bounded worker pool through a single-flight LRU
+/// cache; everything else is answered on the calling (I/O) thread (rivers.geojson on a worker
+/// while it is still being written). docs/architecture.md follows a tile request through it.
+/// Thread-safe.
 class TileServer {
 public:
   /// A server over `worlds` (id, data); ids must be unique URL segments.
@@ -71,19 +68,15 @@ public:
 private:
   struct ServedWorld;
   const ServedWorld* find(const std::string& id) const;
-  http::Response index() const;
-  /// A file of the built viewer (webRoot), by path segments; 404 when there is none.
-  http::Response staticFile(const std::vector<std::string>& segments) const;
-  http::Response worldList(const http::Request& request) const;
+  /// The endpoints under /worlds/{id}: `endpoint` is routeOf(target.segments).
+  void handleWorld(const ServedWorld& world, Endpoint endpoint, const ParsedTarget& target,
+                   const http::Request& request, std::function<void(http::Response)> done);
   http::Response tileJson(const ServedWorld& world, const http::Request& request) const;
-  /// rivers.geojson of `world`, gzipped if `request` accepts it; a worker waits for it while
-  /// it is still being written.
-  void rivers(const ServedWorld& world, const http::Request& request,
-              std::function<void(http::Response)> done);
-  void tile(const ServedWorld& world, const std::vector<std::string>& segments,
-            const std::map<std::string, std::string>& query, const http::Request& request,
+  /// The tile pipeline: route → TileRequest → grid → 304 → cache (single flight) → a worker's
+  /// TileService::render → outcome → tileResponse().
+  void tile(const ServedWorld& world, const ParsedTarget& target, const http::Request& request,
             std::function<void(http::Response)> done);
-  std::string gauges() const;
+  http::Response metricsResponse() const;
 
   std::vector<std::unique_ptr<ServedWorld>> worlds_;
   TileServerOptions options_;

@@ -1,39 +1,40 @@
 #pragma once
 
-#include "tile_format.h"
+#include "tile_renderer.h"
+#include "tile_request.h"
+#include "tile_status.h"
 
 #include "strahler/base/result.h"
 #include "strahler/construction/world.h"
 #include "strahler/tiling/tile_evaluator.h"
 #include "strahler/tiling/tile_scheme.h"
 
-#include <string>
+#include <array>
+#include <memory>
 
 namespace strahler::app {
 
-/// A finished tile with what it cost.
-struct RenderedTile {
-  std::string bytes;
-  std::string mimeType;
-  double evaluateMs = 0.0;
-  double encodeMs = 0.0;
-  tiling::TileStats stats;
-};
+/// What a render error means to whoever asked: kNotFound for a tile outside its pyramid,
+/// kUnsupported for a format this installation cannot make (its OpenImageIO module is
+/// missing), kFailed for the rest.
+service::TileStatus renderStatus(base::ErrorCode code) noexcept;
 
-/// Largest position error (m) a mesh tile's Draco quantisation may introduce: 1 cm, or a
-/// thousandth of the vertex spacing on coarse tiles (kilometre-wide tiles cannot keep 1 cm in
-/// float32 coordinates).
-double meshPositionError(double vertexSpacing) noexcept;
-
-/// Makes tiles of one world: both pyramids, every format. Thread-safe.
+/// Makes tiles of one world: both pyramids, every kind of tile, each kind by its renderer.
+/// Knows nothing of the transport (the server, `strahler tile` and `strahler export` share it).
+/// Thread-safe.
 class TileService {
 public:
   /// A service over `world` (kept by the service).
   explicit TileService(construction::WorldData world);
+  ~TileService();
   TileService(const TileService&) = delete;
   TileService& operator=(const TileService&) = delete;
 
-  /// The tile, or kNotFound when it is outside the pyramid, kOutOfRange for a bad size.
+  /// kNotFound when the tile of `request` is outside its pyramid (the message says which zooms
+  /// it has); cheap, so a server can refuse such a tile before queueing it.
+  base::Status checkTile(const TileRequest& request) const;
+  /// The tile, or kNotFound when it is outside the pyramid, kOutOfRange for a bad size, or the
+  /// renderer's error (renderStatus() says what each means).
   base::Result<RenderedTile> render(const TileRequest& request) const;
 
   /// The evaluated world.
@@ -48,6 +49,8 @@ private:
   tiling::TileEvaluator evaluator_;
   tiling::TileScheme web_;
   tiling::TileScheme local_;
+  /// The renderer of each TileKind, by its value.
+  std::array<std::unique_ptr<const TileRenderer>, 2> renderers_;
 };
 
 } // namespace strahler::app

@@ -169,7 +169,7 @@ int runTile(const std::vector<std::string>& raw) {
       scheme == "local" ? tiling::SchemeKind::kLocal : tiling::SchemeKind::kWebMercator;
   request.tile = {static_cast<int>(*z.value()), *x.value(), *y.value()};
   request.format = format.value();
-  request.size = static_cast<int>(size.value().value_or(0));
+  request.options.size = static_cast<int>(size.value().value_or(0));
   auto tile = service.render(request);
   if (!tile)
     return fail(tile.error());

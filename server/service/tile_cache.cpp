@@ -57,24 +57,24 @@ std::exception_ptr deliver(const std::vector<Callback>& waiters, const Outcome& 
   return first;
 }
 
-Outcome errorOutcome(int status, std::string message) {
+Outcome errorOutcome(TileStatus status, std::string message) {
   return Outcome{nullptr, status, std::move(message)};
 }
 
-/// Runs `compute`, turning exceptions and tile-less successes into 500 outcomes.
+/// Runs `compute`, turning exceptions and tile-less successes into kFailed outcomes.
 Outcome computeSafely(const TileCache::Compute& compute) {
   try {
     Outcome outcome = compute();
-    if (outcome.errorStatus != 0) {
+    if (outcome.status != TileStatus::kOk) {
       outcome.tile = nullptr;
     } else if (!outcome.tile) {
-      return errorOutcome(500, "tile computation produced no tile");
+      return errorOutcome(TileStatus::kFailed, "tile computation produced no tile");
     }
     return outcome;
   } catch (const std::exception& e) {
-    return errorOutcome(500, std::string("tile computation failed: ") + e.what());
+    return errorOutcome(TileStatus::kFailed, std::string("tile computation failed: ") + e.what());
   } catch (...) {
-    return errorOutcome(500, "tile computation failed");
+    return errorOutcome(TileStatus::kFailed, "tile computation failed");
   }
 }
 
@@ -120,8 +120,8 @@ struct CacheCore {
     return flight;
   }
 
-  /// Answers the waiters of `flight` with 503 instead of computing when every one of them is
-  /// gone; true when it did (or the flight was already answered).
+  /// Answers the waiters of `flight` with kRetryLater instead of computing when every one of them
+  /// is gone; true when it did (or the flight was already answered).
   bool cancelIfNobodyWaits(const std::string& key, const std::shared_ptr<Flight>& flight) {
     std::vector<Callback> waiters;
     {
@@ -134,7 +134,8 @@ struct CacheCore {
       waiters = takeWaiters(key, flight);
       ++counters.cancelled;
     }
-    (void)deliver(waiters, errorOutcome(503, "every client of this tile has gone"));
+    (void)deliver(waiters,
+                  errorOutcome(TileStatus::kRetryLater, "every client of this tile has gone"));
     return true;
   }
 
@@ -182,7 +183,7 @@ struct CacheCore {
     {
       std::lock_guard lock(mutex);
       ++counters.computations;
-      if (outcome.errorStatus == 0) {
+      if (outcome.status == TileStatus::kOk) {
         insert(key, outcome.tile);
       } else {
         ++counters.errors;
@@ -194,7 +195,7 @@ struct CacheCore {
     }
   }
 
-  /// Answers the waiters of a flight that will never run with 503. Callback exceptions are
+  /// Answers the waiters of a flight that will never run with kRetryLater. Callback exceptions are
   /// dropped: this runs from destructors and refusal paths with nobody to report them to.
   void abandon(const std::string& key, const std::shared_ptr<Flight>& flight) noexcept {
     std::vector<Callback> waiters;
@@ -203,7 +204,7 @@ struct CacheCore {
       waiters = takeWaiters(key, flight);
       counters.refused += waiters.size();
     }
-    (void)deliver(waiters, errorOutcome(503, "server busy"));
+    (void)deliver(waiters, errorOutcome(TileStatus::kRetryLater, "server busy"));
   }
 };
 
@@ -231,7 +232,7 @@ public:
     core_->finish(key_, flight_, computeSafely(compute_));
   }
 
-  /// Answers the waiters with 503 unless the computation already ran.
+  /// Answers the waiters with kRetryLater unless the computation already ran.
   void refuse() {
     if (!ran_.exchange(true)) {
       core_->abandon(key_, flight_);
@@ -246,7 +247,7 @@ private:
   std::atomic<bool> ran_{false};
 };
 
-/// Hands the computation of a new flight to `schedule`; answers 503 when it is refused.
+/// Hands the computation of a new flight to `schedule`; answers kRetryLater when it is refused.
 void startFlight(const std::shared_ptr<CacheCore>& core, const std::string& key,
                  std::shared_ptr<Flight> flight, const TileCache::Compute& compute,
                  const TileCache::Schedule& schedule) {
@@ -301,7 +302,7 @@ void TileCache::get(const std::string& key, const Compute& compute, const Schedu
     }
   }
   if (hit) {
-    callback(Outcome{std::move(hit), 0, {}});
+    callback(Outcome{std::move(hit), TileStatus::kOk, {}});
   } else if (started) {
     startFlight(impl_->core, key, std::move(started), compute, schedule);
   }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "tile_status.h"
+
 #include <atomic>
 #include <cstddef>
 #include <functional>
@@ -15,8 +17,8 @@ struct CachedTile {
   std::string bytes;
   std::string mimeType;
   std::string etag; ///< Strong ETag, quoted.
-  /// The header fields of the tile's HTTP response, serialised once by the server when the
-  /// tile is made (opaque to the cache; may be empty).
+  /// The header fields of the tile's response, serialised once by whoever made the tile (opaque
+  /// to the cache, which only charges their bytes; may be empty).
   std::string httpFields;
   double evaluateMs = 0.0;
   double encodeMs = 0.0;
@@ -35,7 +37,7 @@ struct TileCacheStats {
   std::size_t coalesced = 0;    ///< Requests that waited for another request's computation.
   std::size_t computations = 0; ///< Times a tile was actually computed.
   std::size_t errors = 0;       ///< Computations that ended in an error (not cached).
-  std::size_t refused = 0;      ///< Requests answered 503 because the work was not scheduled.
+  std::size_t refused = 0;      ///< Requests answered kRetryLater: the work was not scheduled.
   std::size_t cancelled = 0;    ///< Computations skipped because every requester had gone.
 };
 
@@ -43,11 +45,12 @@ struct TileCacheStats {
 /// key trigger one computation and all receive its result. Thread-safe.
 class TileCache {
 public:
-  /// The result of a computation: a tile, or an error status and message (not cached).
+  /// The result of a computation: a tile (kOk), or another status and its message (not
+  /// cached).
   struct Outcome {
-    std::shared_ptr<const CachedTile> tile; ///< Null on error.
-    int errorStatus = 0;
-    std::string errorMessage;
+    std::shared_ptr<const CachedTile> tile; ///< Null unless status is kOk.
+    TileStatus status = TileStatus::kOk;
+    std::string message; ///< Why there is no tile; empty for kOk.
   };
   /// Computes a tile; runs outside the cache lock.
   using Compute = std::function<Outcome()>;
@@ -56,7 +59,7 @@ public:
   /// True once a requester is gone (its answer can no longer be delivered); null: never.
   using Gone = std::shared_ptr<const std::atomic<bool>>;
   /// Hands a computation to a worker; returns false when it cannot be queued (overload).
-  /// Work destroyed without being run (e.g. by WorkerPool's destructor) answers 503.
+  /// Work destroyed without being run (e.g. by WorkerPool's destructor) answers kRetryLater.
   using Schedule = std::function<bool(std::function<void()> work)>;
 
   /// A cache holding at most `maxBytes` heap bytes (TileCacheStats::bytes; 0: nothing is kept,
@@ -67,12 +70,14 @@ public:
   /// Delivers the tile of `key` to `callback`: at once on a hit; otherwise joins the
   /// computation in flight for `key`, or starts one through `schedule`. When `schedule`
   /// refuses (or throws, or drops the work unrun), callback and every request that joined
-  /// meanwhile get errorStatus 503. An exception from `compute` becomes errorStatus 500.
+  /// meanwhile get kRetryLater. An exception from `compute`, or a kOk without a tile, becomes
+  /// kFailed.
   /// Each callback is called exactly once, never under the cache lock (it may use the cache
   /// again); if one throws, the others are still called and the first exception propagates to
-  /// whoever ran the work (swallowed for 503 answers). The work holds the cache state alive,
-  /// so a TileCache may be destroyed while its computations are still queued. When the work
-  /// runs and every waiter's `gone` is set, nothing is computed: they get 503 (cancelled).
+  /// whoever ran the work (swallowed for kRetryLater answers). The work holds the cache state
+  /// alive, so a TileCache may be destroyed while its computations are still queued. When the work
+  /// runs and every waiter's `gone` is set, nothing is computed: they get kRetryLater
+  /// (cancelled).
   void get(const std::string& key, const Compute& compute, const Schedule& schedule,
            Callback callback, Gone gone = nullptr);
 

@@ -1,10 +1,10 @@
 // The tile server's endpoints over real sockets on 127.0.0.1 (ephemeral port).
-#include "http_server.h"
 #include "test_client.h"
 #include "test_worlds.h"
 #include "tile_server.h"
 
 #include "strahler/construction/world_builder.h"
+#include "strahler/http/http_server.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -3,6 +3,7 @@
 // decoders in tests/node check our bytes against the terrain itself:
 //   <dir>/heightmaps/<name>.<format>.png + .json   (check_heightmaps.mjs)
 //   <dir>/meshes/<name>.drc, .glb + .json          (check_draco.mjs, validate_glb.mjs)
+#include "mesh_renderer.h"
 #include "test_worlds.h"
 #include "tile_service.h"
 
@@ -57,7 +58,7 @@ bool heightmaps(const app::TileService& service, const fs::path& dir, const tili
       {app::TileFormat::kTerrarium, "terrarium"},
       {app::TileFormat::kPng16, "png16"}};
   for (const auto& [format, label] : formats) {
-    auto rendered = service.render({tiling::SchemeKind::kWebMercator, tile, format, 64});
+    auto rendered = service.render({tiling::SchemeKind::kWebMercator, tile, format, {64}, {}});
     if (!rendered)
       return false;
     // The tile stores float32 heights; the reference is the same value before that rounding.
@@ -84,8 +85,9 @@ bool meshes(const app::TileService& service, const fs::path& dir, const tiling::
   input.heights.assign(h.begin(), h.end());
   input.skirtDepth = std::max(1.0, 0.5 * input.spacing);
   auto mesh = encoding::buildGridMesh(input);
-  auto drc = service.render({tiling::SchemeKind::kLocal, tile, app::TileFormat::kDraco, quads});
-  auto glb = service.render({tiling::SchemeKind::kLocal, tile, app::TileFormat::kGlb, quads});
+  auto drc =
+      service.render({tiling::SchemeKind::kLocal, tile, app::TileFormat::kDraco, {quads}, {}});
+  auto glb = service.render({tiling::SchemeKind::kLocal, tile, app::TileFormat::kGlb, {quads}, {}});
   if (!mesh || !drc || !glb)
     return false;
   const std::string json =

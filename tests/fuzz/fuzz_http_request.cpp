@@ -1,5 +1,5 @@
 // libFuzzer harness: the bytes a client sends on one connection, handled as
-// server/http/session.cpp handles them: Beast's header parser with the server's limits, the
+// server/http/src/session.cpp handles them: Beast's header parser with the server's limits, the
 // protocol rules (checkRequest / checkParseError), the response as written (toWireResponse,
 // appendHead), and for forwarded requests the router's parsers (parseTarget, parseTileRoute)
 // with JSON error answers quoting the client's bytes. Pipelined requests are followed while the
@@ -51,8 +51,8 @@ bool route(const strahler::http::Request& request, unsigned version, bool keepAl
       response.close = true;
     } else {
       response.headers = {{"Content-Type", "application/octet-stream"},
-                          {"X-Tile-Key", tile.value().key}}; // client bytes in a header
-      response.body = strahler::app::canonicalFormatName(tile.value().request.format);
+                          {"X-Tile-Key", strahler::app::tileKey(tile.value())}}; // client bytes
+      response.body = strahler::app::canonicalFormatName(tile.value().format);
     }
   } else if (s.size() >= 2 && s[0] == "worlds") {
     response = strahler::http::errorResponse(404, "unknown world '" + s[1].substr(0, 64) + "'");

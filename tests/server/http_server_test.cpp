@@ -1,8 +1,9 @@
 // Normal traffic: GET, HEAD, OPTIONS, keep-alive, pipelining, handler failures, observer.
 #include "access_log.h"
-#include "http_types.h"
 #include "test_client.h"
 #include "test_server.h"
+
+#include "strahler/http/http_types.h"
 
 #include <gtest/gtest.h>
 

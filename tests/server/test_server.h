@@ -1,7 +1,7 @@
 #pragma once
 
-#include "http_server.h"
-#include "http_types.h"
+#include "strahler/http/http_server.h"
+#include "strahler/http/http_types.h"
 
 #include <atomic>
 #include <chrono>

@@ -1,5 +1,5 @@
 // Which peers' X-Forwarded-* headers the server believes.
-#include "trusted_proxies.h"
+#include "strahler/http/trusted_proxies.h"
 
 #include <gtest/gtest.h>
 

@@ -32,7 +32,7 @@ inline TileCache::Compute computeReturning(std::shared_ptr<const CachedTile> til
     if (calls) {
       ++*calls;
     }
-    return TileCache::Outcome{tile, 0, {}};
+    return TileCache::Outcome{tile, TileStatus::kOk, {}};
   };
 }
 

@@ -61,14 +61,14 @@ TEST(TileCacheStress, EveryRequestIsAnsweredExactlyOnceWithinTheByteBound) {
               "k" + std::to_string(index),
               [index] {
                 std::this_thread::yield();
-                return TileCache::Outcome{tileOfKey(index), 0, {}};
+                return TileCache::Outcome{tileOfKey(index), TileStatus::kOk, {}};
               },
               schedule,
               [&tally, request, expectedEtag](const TileCache::Outcome& outcome) {
                 ++tally.answers[static_cast<std::size_t>(request)];
-                if (outcome.errorStatus == 503) {
+                if (outcome.status == TileStatus::kRetryLater) {
                   ++tally.busy;
-                } else if (outcome.errorStatus != 0) {
+                } else if (outcome.status != TileStatus::kOk) {
                   ++tally.unexpectedErrors;
                 } else if (outcome.tile->etag != expectedEtag) {
                   ++tally.wrongTiles;

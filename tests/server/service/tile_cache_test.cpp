@@ -33,7 +33,7 @@ std::shared_ptr<const CachedTile> fetch(TileCache& cache, const std::string& key
         if (computeCalls != nullptr) {
           ++*computeCalls;
         }
-        return TileCache::Outcome{makeTile(size), 0, {}};
+        return TileCache::Outcome{makeTile(size), TileStatus::kOk, {}};
       },
       runInline, [&](const TileCache::Outcome& outcome) { delivered = outcome.tile; });
   return delivered;
@@ -182,7 +182,7 @@ TEST(TileCache, ConcurrentRequestsForOneKeyComputeOnceAndShareTheTile) {
   const TileCache::Compute compute = [&] {
     ++computeCalls;
     release.wait(); // Hold the computation until every request has joined it.
-    return TileCache::Outcome{tile, 0, {}};
+    return TileCache::Outcome{tile, TileStatus::kOk, {}};
   };
   std::vector<std::jthread> computing;
   std::mutex computingMutex;
@@ -209,7 +209,7 @@ TEST(TileCache, ConcurrentRequestsForOneKeyComputeOnceAndShareTheTile) {
   const auto outcomes = log.outcomes();
   ASSERT_EQ(outcomes.size(), static_cast<std::size_t>(kThreads));
   for (const auto& outcome : outcomes) {
-    EXPECT_EQ(outcome.errorStatus, 0);
+    EXPECT_EQ(outcome.status, TileStatus::kOk);
     EXPECT_EQ(outcome.tile, tile);
   }
   const TileCacheStats stats = cache.stats();
@@ -223,7 +223,9 @@ TEST(TileCache, ErrorsReachEveryWaiterAndAreNotCached) {
   OutcomeLog log;
   TileCache cache(10000);
   ManualScheduler scheduler;
-  const TileCache::Compute failing = [] { return TileCache::Outcome{nullptr, 404, "no tile"}; };
+  const TileCache::Compute failing = [] {
+    return TileCache::Outcome{nullptr, TileStatus::kNotFound, "no tile"};
+  };
   for (int i = 0; i < 3; ++i) {
     cache.get("k", failing, scheduler.schedule(), log.callback());
   }
@@ -232,8 +234,8 @@ TEST(TileCache, ErrorsReachEveryWaiterAndAreNotCached) {
   const auto outcomes = log.outcomes();
   ASSERT_EQ(outcomes.size(), 3u);
   for (const auto& outcome : outcomes) {
-    EXPECT_EQ(outcome.errorStatus, 404);
-    EXPECT_EQ(outcome.errorMessage, "no tile");
+    EXPECT_EQ(outcome.status, TileStatus::kNotFound);
+    EXPECT_EQ(outcome.message, "no tile");
     EXPECT_EQ(outcome.tile, nullptr);
   }
   EXPECT_EQ(cache.stats().entries, 0u);
@@ -242,7 +244,7 @@ TEST(TileCache, ErrorsReachEveryWaiterAndAreNotCached) {
   EXPECT_EQ(scheduler.pending(), 1u) << "an error must not be served from the cache";
 }
 
-TEST(TileCache, RefusedScheduleAnswers503ToEveryoneWhoJoinedMeanwhile) {
+TEST(TileCache, RefusedScheduleAnswersRetryLaterToEveryoneWhoJoinedMeanwhile) {
   OutcomeLog log;
   TileCache cache(10000);
   const auto compute = computeReturning(makeTile(10));
@@ -259,8 +261,8 @@ TEST(TileCache, RefusedScheduleAnswers503ToEveryoneWhoJoinedMeanwhile) {
   const auto outcomes = log.outcomes();
   ASSERT_EQ(outcomes.size(), 3u);
   for (const auto& outcome : outcomes) {
-    EXPECT_EQ(outcome.errorStatus, 503);
-    EXPECT_EQ(outcome.errorMessage, "server busy");
+    EXPECT_EQ(outcome.status, TileStatus::kRetryLater);
+    EXPECT_EQ(outcome.message, "server busy");
   }
   EXPECT_EQ(scheduleCalls, 1);
   EXPECT_EQ(cache.stats().inFlight, 0u);
@@ -270,7 +272,7 @@ TEST(TileCache, RefusedScheduleAnswers503ToEveryoneWhoJoinedMeanwhile) {
   // The refused flight is gone: the next request starts a fresh one.
   cache.get("k", compute, runInline, log.callback());
   ASSERT_EQ(log.outcomes().size(), 4u);
-  EXPECT_EQ(log.outcomes().back().errorStatus, 0);
+  EXPECT_EQ(log.outcomes().back().status, TileStatus::kOk);
 }
 
 TEST(TileCache, ScheduleThatThrowsCountsAsRefusal) {
@@ -281,11 +283,11 @@ TEST(TileCache, ScheduleThatThrowsCountsAsRefusal) {
   };
   cache.get("k", computeReturning(makeTile(10)), throwing, log.callback());
   ASSERT_EQ(log.outcomes().size(), 1u);
-  EXPECT_EQ(log.outcomes()[0].errorStatus, 503);
+  EXPECT_EQ(log.outcomes()[0].status, TileStatus::kRetryLater);
   EXPECT_EQ(cache.stats().inFlight, 0u);
 }
 
-TEST(TileCache, WorkDroppedUnrunAnswers503Once) {
+TEST(TileCache, WorkDroppedUnrunAnswersRetryLaterOnce) {
   OutcomeLog log;
   TileCache cache(10000);
   ManualScheduler scheduler;
@@ -296,8 +298,8 @@ TEST(TileCache, WorkDroppedUnrunAnswers503Once) {
   scheduler.dropAll();
   const auto outcomes = log.outcomes();
   ASSERT_EQ(outcomes.size(), 2u);
-  EXPECT_EQ(outcomes[0].errorStatus, 503);
-  EXPECT_EQ(outcomes[1].errorStatus, 503);
+  EXPECT_EQ(outcomes[0].status, TileStatus::kRetryLater);
+  EXPECT_EQ(outcomes[1].status, TileStatus::kRetryLater);
   EXPECT_EQ(cache.stats().inFlight, 0u);
 }
 
@@ -308,7 +310,7 @@ TEST(TileCache, QueuedWorkWhoseRequestersAllLeftIsNotComputed) {
   int calls = 0;
   const TileCache::Compute compute = [&] {
     ++calls;
-    return TileCache::Outcome{makeTile(10), 0, {}};
+    return TileCache::Outcome{makeTile(10), TileStatus::kOk, {}};
   };
   auto first = std::make_shared<std::atomic<bool>>(false);
   auto second = std::make_shared<std::atomic<bool>>(false);
@@ -324,8 +326,8 @@ TEST(TileCache, QueuedWorkWhoseRequestersAllLeftIsNotComputed) {
   EXPECT_EQ(calls, 1);
   const auto outcomes = log.outcomes();
   ASSERT_EQ(outcomes.size(), 4u);
-  EXPECT_EQ(outcomes[0].errorStatus, 503);
-  EXPECT_EQ(outcomes[1].errorStatus, 503);
+  EXPECT_EQ(outcomes[0].status, TileStatus::kRetryLater);
+  EXPECT_EQ(outcomes[1].status, TileStatus::kRetryLater);
   EXPECT_NE(outcomes[2].tile, nullptr);
   EXPECT_NE(outcomes[3].tile, nullptr);
   const TileCacheStats stats = cache.stats();
@@ -336,7 +338,7 @@ TEST(TileCache, QueuedWorkWhoseRequestersAllLeftIsNotComputed) {
       << "a cancelled key is computed for the next request";
 }
 
-TEST(TileCache, WorkDroppedByADestroyedPoolAnswers503) {
+TEST(TileCache, WorkDroppedByADestroyedPoolAnswersRetryLater) {
   OutcomeLog log;
   Watchdog watchdog("pool destroyed with queued tile work");
   TileCache cache(10000);
@@ -358,11 +360,11 @@ TEST(TileCache, WorkDroppedByADestroyedPoolAnswers503) {
   destroyer.join();
   const auto outcomes = log.outcomes();
   ASSERT_EQ(outcomes.size(), 1u);
-  EXPECT_EQ(outcomes[0].errorStatus, 503);
+  EXPECT_EQ(outcomes[0].status, TileStatus::kRetryLater);
   EXPECT_EQ(cache.stats().inFlight, 0u);
 }
 
-TEST(TileCache, ComputeThatThrowsGives500ToEveryWaiter) {
+TEST(TileCache, ComputeThatThrowsFailsEveryWaiter) {
   OutcomeLog log;
   TileCache cache(10000);
   ManualScheduler scheduler;
@@ -375,24 +377,24 @@ TEST(TileCache, ComputeThatThrowsGives500ToEveryWaiter) {
   const auto outcomes = log.outcomes();
   ASSERT_EQ(outcomes.size(), 2u);
   for (const auto& outcome : outcomes) {
-    EXPECT_EQ(outcome.errorStatus, 500);
-    EXPECT_NE(outcome.errorMessage.find("boom"), std::string::npos);
+    EXPECT_EQ(outcome.status, TileStatus::kFailed);
+    EXPECT_NE(outcome.message.find("boom"), std::string::npos);
   }
   EXPECT_EQ(cache.stats().entries, 0u);
 
   cache.get(
       "k", []() -> TileCache::Outcome { throw 42; }, runInline, log.callback());
   ASSERT_EQ(log.outcomes().size(), 3u);
-  EXPECT_EQ(log.outcomes()[2].errorStatus, 500);
+  EXPECT_EQ(log.outcomes()[2].status, TileStatus::kFailed);
 }
 
-TEST(TileCache, SuccessWithoutTileGives500) {
+TEST(TileCache, SuccessWithoutTileIsAFailure) {
   OutcomeLog log;
   TileCache cache(10000);
   cache.get(
       "k", [] { return TileCache::Outcome{}; }, runInline, log.callback());
   ASSERT_EQ(log.outcomes().size(), 1u);
-  EXPECT_EQ(log.outcomes()[0].errorStatus, 500);
+  EXPECT_EQ(log.outcomes()[0].status, TileStatus::kFailed);
   EXPECT_EQ(cache.stats().entries, 0u);
 }
 
@@ -417,7 +419,7 @@ TEST(TileCache, CallbacksRunOutsideTheCacheLock) {
   int reentered = 0;
   // A callback that uses the cache again would deadlock if it ran under the cache lock.
   const TileCache::Callback reentrant = [&](const TileCache::Outcome& outcome) {
-    EXPECT_EQ(outcome.errorStatus, 0);
+    EXPECT_EQ(outcome.status, TileStatus::kOk);
     EXPECT_GE(cache.stats().misses, 1u);
     cache.get("other", computeReturning(makeTile(5)), runInline,
               [&](const TileCache::Outcome&) { ++reentered; });
@@ -438,7 +440,7 @@ TEST(TileCache, ComputationMayOutliveTheCache) {
   }
   scheduler.runNext();
   ASSERT_EQ(log.outcomes().size(), 1u);
-  EXPECT_EQ(log.outcomes()[0].errorStatus, 0);
+  EXPECT_EQ(log.outcomes()[0].status, TileStatus::kOk);
 }
 
 } // namespace

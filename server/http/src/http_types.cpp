@@ -1,4 +1,4 @@
-#include "http_types.h"
+#include "strahler/http/http_types.h"
 
 #include <cstdint>
 #include <string_view>

@@ -1,4 +1,4 @@
-#include "trusted_proxies.h"
+#include "strahler/http/trusted_proxies.h"
 
 #include <boost/asio/ip/address.hpp>
 

@@ -91,9 +91,9 @@ void Session::shed() {
 }
 
 void Session::closeNow() noexcept {
-  if (closed_)
+  if (phase_ == Phase::kClosed)
     return;
-  closed_ = closing_ = true;
+  phase_ = Phase::kClosed;
   clientGone_->store(true, std::memory_order_relaxed);
   ErrorCode ignored;
   socket_.shutdown(tcp::socket::shutdown_both, ignored);
@@ -105,28 +105,32 @@ void Session::closeNow() noexcept {
   state_->remove(this);
 }
 
+void Session::beginClosing() noexcept {
+  if (phase_ == Phase::kOpen)
+    phase_ = Phase::kClosing;
+}
+
 // ---- reading -------------------------------------------------------------------------------
 
 void Session::doRead() {
-  if (closing_ || reading_ || queue_.size() >= options_.maxPipelined)
+  if (phase_ != Phase::kOpen || read_ != Read::kNone || queue_.size() >= options_.maxPipelined)
     return;
-  reading_ = true;
   parser_.emplace();
   parser_->header_limit(static_cast<std::uint32_t>(
       std::min<std::size_t>(options_.maxHeaderBytes, std::numeric_limits<std::uint32_t>::max())));
   // No body is ever read, so the body limit is only a formality: checkRequest() answers any
   // announced body with the right status. (boost::none would fail even Content-Length: 0.)
   parser_->body_limit(std::numeric_limits<std::uint64_t>::max());
-  if (buffer_.size() == 0 && !firstRequest_)
+  if (buffer_.size() == 0 && !firstRequest())
     return waitForRequest();
-  readingHeader_ = true;
+  read_ = Read::kHeader;
   arm(readDeadline_, options_.headerTimeout);
   parseBuffered();
   updateSheddable();
 }
 
 void Session::waitForRequest() {
-  readingHeader_ = false;
+  read_ = Read::kIdle;
   arm(readDeadline_, options_.idleTimeout);
   socket_.async_read_some(buffer_.prepare(kReadChunkBytes),
                           beast::bind_front_handler(&Session::onRequestStart, shared_from_this()));
@@ -139,7 +143,7 @@ void Session::onRequestStart(ErrorCode ec, std::size_t bytes) {
   buffer_.commit(bytes);
   if (stopReadingIfClosing())
     return;
-  readingHeader_ = true;
+  read_ = Read::kHeader;
   arm(readDeadline_, options_.headerTimeout);
   parseBuffered();
 }
@@ -179,9 +183,8 @@ void Session::onMoreRead(ErrorCode ec, std::size_t bytes) {
 }
 
 void Session::onHeader() {
-  reading_ = readingHeader_ = false;
+  read_ = Read::kNone;
   disarm(readDeadline_);
-  firstRequest_ = false;
   dispatch();
   doRead();
   updateSheddable();
@@ -190,11 +193,11 @@ void Session::onHeader() {
 /// A read completed after the session decided to stop reading (drain, close, linger): the
 /// request is not answered.
 bool Session::stopReadingIfClosing() {
-  if (!closing_)
+  if (phase_ == Phase::kOpen)
     return false;
-  reading_ = false;
+  read_ = Read::kNone;
   disarm(readDeadline_);
-  if (lingering_) {
+  if (phase_ == Phase::kLingering) {
     closeNow();
   } else {
     closeIfIdle();
@@ -203,20 +206,20 @@ bool Session::stopReadingIfClosing() {
 }
 
 void Session::onReadFailed(const ErrorCode& ec) {
-  reading_ = readingHeader_ = false;
+  read_ = Read::kNone;
   disarm(readDeadline_);
-  if (closed_)
+  if (phase_ == Phase::kClosed)
     return;
-  if (!lingering_ && isParseError(ec))
+  if (phase_ != Phase::kLingering && isParseError(ec))
     return answerParseError(ec);
   // The peer closed or reset the connection, or it timed out: answer what is owed, then close.
   // A peer that closed is most likely gone (a browser cancelling tile requests closes the
   // connection): work queued for it may be skipped. Only a client that half-closes and still
   // reads loses by this (it gets 503), as with nginx's default for proxied requests.
-  closing_ = true;
+  beginClosing();
   if (!queue_.empty())
     clientGone_->store(true, std::memory_order_relaxed);
-  if (lingering_)
+  if (phase_ == Phase::kLingering)
     return closeNow();
   closeIfIdle();
 }
@@ -230,7 +233,7 @@ void Session::dispatch() {
   const Exchange& exchange = enqueue(toStd(header.method_string()), toStd(header.target()),
                                      header.version(), head, header.keep_alive() && !verdict.close);
   if (!exchange.keepAlive)
-    closing_ = true;
+    beginClosing();
   if (verdict.kind == Verdict::Kind::kForward)
     return callHandler(exchange.sequence,
                        makeRequest(header, head, localAddress_, fromTrustedProxy_, clientGone_));
@@ -243,7 +246,7 @@ void Session::answerParseError(const ErrorCode& ec) {
   const auto& header = parser_->get();
   const Exchange& exchange =
       enqueue(toStd(header.method_string()), toStd(header.target()), 11, false, false);
-  closing_ = true;
+  beginClosing();
   answer(exchange.sequence, std::move(verdict.response));
 }
 
@@ -299,7 +302,7 @@ void Session::postAnswer(std::uint64_t sequence, Response response) {
 }
 
 void Session::answer(std::uint64_t sequence, Response response) {
-  if (closed_ || queue_.empty() || sequence < queue_.front().sequence)
+  if (phase_ == Phase::kClosed || queue_.empty() || sequence < queue_.front().sequence)
     return;
   const std::uint64_t index = sequence - queue_.front().sequence;
   if (index >= queue_.size())
@@ -311,7 +314,7 @@ void Session::answer(std::uint64_t sequence, Response response) {
   // request we could not make sense of may have framed the next ones wrongly as well.
   if (response.close || response.status == 400) {
     exchange.keepAlive = false;
-    closing_ = true;
+    beginClosing();
   }
   exchange.route = response.route;
   exchange.message.emplace(toWireResponse(std::move(response), exchange.version, exchange.head));
@@ -322,7 +325,7 @@ void Session::answer(std::uint64_t sequence, Response response) {
 // ---- writing -------------------------------------------------------------------------------
 
 void Session::maybeWrite() {
-  if (writing_ || closed_ || queue_.empty() || !queue_.front().message)
+  if (writing_ || phase_ == Phase::kClosed || queue_.empty() || !queue_.front().message)
     return;
   Exchange& exchange = queue_.front();
   if (state_->draining() && queue_.size() == 1)
@@ -344,7 +347,7 @@ void Session::maybeWrite() {
 void Session::onWrite(ErrorCode ec) {
   writing_ = false;
   disarm(writeDeadline_);
-  if (closed_ || queue_.empty())
+  if (phase_ == Phase::kClosed || queue_.empty())
     return;
   const Exchange exchange = std::move(queue_.front());
   queue_.pop_front();
@@ -354,7 +357,7 @@ void Session::onWrite(ErrorCode ec) {
   if (!exchange.keepAlive)
     return linger();
   maybeWrite();
-  if (closing_)
+  if (phase_ != Phase::kOpen)
     return closeIfIdle();
   doRead(); // resumes reading if the pipelining cap had paused it
   updateSheddable();
@@ -371,27 +374,27 @@ void Session::record(const Exchange& exchange, bool sent) noexcept {
 /// After the last response: shut the send side and read until the client closes, so that
 /// unread request bytes do not turn the close into a reset that could discard the response.
 void Session::linger() {
-  closing_ = lingering_ = true;
+  phase_ = Phase::kLingering;
   updateSheddable();
   queue_.clear(); // requests pipelined after a closing response are not answered
   ErrorCode ignored;
   socket_.shutdown(tcp::socket::shutdown_send, ignored);
   arm(readDeadline_, state_->draining() || shed_ ? kDrainingLingerTimeout : kLingerTimeout);
-  if (!reading_)
+  if (read_ == Read::kNone)
     discard(); // otherwise the pending read's completion closes
 }
 
 void Session::discard() {
-  reading_ = true;
+  read_ = Read::kDiscard;
   buffer_.clear();
-  socket_.async_read_some(buffer_.prepare(kReadChunkBytes),
-                          [self = shared_from_this()](ErrorCode ec, std::size_t bytes) {
-                            self->reading_ = false;
-                            self->discarded_ += bytes;
-                            if (ec || self->closed_ || self->discarded_ > kMaxLingerBytes)
-                              return self->closeNow();
-                            self->discard();
-                          });
+  socket_.async_read_some(buffer_.prepare(kReadChunkBytes), [self = shared_from_this()](
+                                                                ErrorCode ec, std::size_t bytes) {
+    self->read_ = Read::kNone;
+    self->discarded_ += bytes;
+    if (ec || self->phase_ == Phase::kClosed || self->discarded_ > kMaxLingerBytes)
+      return self->closeNow();
+    self->discard();
+  });
 }
 
 void Session::closeIfIdle() {
@@ -400,23 +403,25 @@ void Session::closeIfIdle() {
 }
 
 void Session::onDrain() {
-  if (closed_)
+  if (phase_ == Phase::kClosed)
     return;
-  closing_ = true;
+  beginClosing();
   updateSheddable();
   closeIfIdle(); // otherwise the last owed response goes out with Connection: close
 }
 
 void Session::onShed() {
-  if (closed_)
+  if (phase_ == Phase::kClosed)
     return;
   shed_ = true;
-  if (closing_ || writing_ || !queue_.empty()) // it got busy meanwhile: finish, then close
+  if (phase_ != Phase::kOpen || writing_ ||
+      !queue_.empty()) // it got busy meanwhile: finish, then close
     return onDrain();
   // A connection still on its first request is answered too, even with nothing read: its
   // request may be in the socket's buffer already, and a client retries by itself only on a
   // connection it has used before.
-  if (readingHeader_ && (firstRequest_ || buffer_.size() > 0 || (parser_ && parser_->got_some())))
+  if (read_ == Read::kHeader &&
+      (firstRequest() || buffer_.size() > 0 || (parser_ && parser_->got_some())))
     return answerAndClose(503, "too many connections: this one had the oldest incomplete "
                                "request header; retry later");
   closeNow(); // idle: a client reopens a closed keep-alive connection by itself
@@ -428,7 +433,7 @@ void Session::answerAndClose(int status, const std::string& message) {
   const auto& header = parser_->get();
   const Exchange& exchange =
       enqueue(toStd(header.method_string()), toStd(header.target()), 11, false, false);
-  closing_ = true;
+  beginClosing();
   Response response = errorResponse(status, message);
   if (status == 503)
     response.headers.emplace_back("Retry-After", "1");
@@ -437,7 +442,7 @@ void Session::answerAndClose(int status, const std::string& message) {
 
 void Session::updateSheddable() noexcept {
   const bool sheddable =
-      reading_ && !closing_ && !lingering_ && !closed_ && !writing_ && queue_.empty();
+      read_ != Read::kNone && phase_ == Phase::kOpen && !writing_ && queue_.empty();
   if (sheddable == (sheddableSince_.load(std::memory_order_relaxed) != 0))
     return;
   const Ticks now = std::max<Ticks>(1, Clock::now().time_since_epoch().count());
@@ -468,7 +473,7 @@ void Session::onWake(Deadline& deadline, std::uint64_t generation) {
   if (generation != deadline.generation)
     return;
   deadline.waiting = false;
-  if (closed_ || !deadline.armed)
+  if (phase_ == Phase::kClosed || !deadline.armed)
     return;
   if (Clock::now() < deadline.at)
     return wait(deadline);
@@ -482,12 +487,12 @@ void Session::onWake(Deadline& deadline, std::uint64_t generation) {
 }
 
 void Session::onReadTimeout() {
-  if (!reading_)
+  if (read_ == Read::kNone)
     return;
   // A client waiting for owed responses is not slow: only an idle connection times out.
-  if (!lingering_ && !queue_.empty())
+  if (phase_ != Phase::kLingering && !queue_.empty())
     return arm(readDeadline_, readDeadline_.timeout);
-  if (readingHeader_ && !closing_) // an idle keep-alive connection closes without a word
+  if (read_ == Read::kHeader && phase_ == Phase::kOpen) // an idle one closes without a word
     return answerAndClose(408, "request header not complete within " +
                                    std::to_string(options_.headerTimeout.count()) + " ms");
   closeNow();

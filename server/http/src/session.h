@@ -1,9 +1,10 @@
 #pragma once
 
-#include "http_types.h"
 #include "net.h"
 #include "server_state.h"
 #include "wire_response.h"
+
+#include "strahler/http/http_types.h"
 
 #include <boost/beast/core/flat_buffer.hpp>
 #include <boost/optional/optional.hpp>
@@ -31,6 +32,8 @@ namespace strahler::http::detail {
 /// expires_after() asserts when a read and a write are both pending, as they are when pipelining.
 /// The timers are lazy: a deadline that moves later is only recorded, and a timer that wakes
 /// before its deadline sleeps again, so a busy connection does not touch them per request.
+/// State: the connection's Phase, the pending Read, and beside them the pending write
+/// (writing_: a response goes out while the next request is read) and the owed responses.
 class Session : public std::enable_shared_from_this<Session> {
 public:
   /// Steady-clock ticks (since its epoch).
@@ -61,6 +64,24 @@ public:
 private:
   using Clock = std::chrono::steady_clock;
   using Duration = Clock::duration;
+
+  /// The connection's life. It only moves forward: kOpen → kClosing → kLingering → kClosed, any
+  /// step may be skipped (closeNow() goes to kClosed from anywhere).
+  enum class Phase {
+    kOpen,      ///< Reads requests and answers them.
+    kClosing,   ///< Reads no further request; closes once the owed responses are written.
+    kLingering, ///< Final response sent, send side shut down; reading until EOF (linger()).
+    kClosed,    ///< Socket closed; completions that still arrive do nothing.
+  };
+
+  /// The read pending on the socket (at most one), which says what its completion and a read
+  /// timeout mean.
+  enum class Read {
+    kNone,    ///< No read pending.
+    kIdle,    ///< Waiting for the first bytes of the next keep-alive request (idle timeout).
+    kHeader,  ///< Reading a request header (header timeout: 408).
+    kDiscard, ///< Lingering: reading and dropping what the client still sends.
+  };
 
   /// One request's place in the pipeline.
   struct Exchange {
@@ -111,6 +132,10 @@ private:
   void linger();
   void discard();
   void closeIfIdle();
+  /// kOpen → kClosing (later phases stay).
+  void beginClosing() noexcept;
+  /// True until the first request header is complete (no request has been queued yet).
+  bool firstRequest() const noexcept { return nextSequence_ == 0; }
   void onDrain();
   void onShed();
   void answerAndClose(int status, const std::string& message);
@@ -142,14 +167,10 @@ private:
   std::string head_; ///< Header block of the response being written.
   std::uint64_t nextSequence_ = 0;
   std::size_t discarded_ = 0; ///< Bytes thrown away while lingering.
-  bool firstRequest_ = true;
-  bool reading_ = false;       ///< A read (idle wait, header or discard) is pending.
-  bool readingHeader_ = false; ///< That read is of a request header (not an idle wait).
-  bool writing_ = false;       ///< A write is pending.
-  bool closing_ = false;       ///< Read no further requests; close once the queue is empty.
-  bool lingering_ = false;     ///< Final response sent, send side shut down; waiting for EOF.
-  bool shed_ = false;          ///< Closed to make room for another connection (short linger).
-  bool closed_ = false;
+  Phase phase_ = Phase::kOpen;
+  Read read_ = Read::kNone;
+  bool writing_ = false; ///< A write is pending (independent of the read: pipelining).
+  bool shed_ = false;    ///< Closed to make room for another connection (short linger).
 };
 
 } // namespace strahler::http::detail

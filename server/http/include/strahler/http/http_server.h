@@ -1,9 +1,8 @@
 #pragma once
 
-#include "http_types.h"
-#include "trusted_proxies.h"
-
 #include "strahler/base/result.h"
+#include "strahler/http/http_types.h"
+#include "strahler/http/trusted_proxies.h"
 
 #include <chrono>
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "http_server.h"
+#include "strahler/http/http_server.h"
 
 #include "listener.h"
 #include "net.h"

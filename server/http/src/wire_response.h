@@ -1,6 +1,6 @@
 #pragma once
 
-#include "http_types.h"
+#include "strahler/http/http_types.h"
 
 #include <chrono>
 #include <cstddef>

@@ -1,8 +1,9 @@
 #pragma once
 
-#include "http_server.h"
-#include "http_types.h"
 #include "net.h"
+
+#include "strahler/http/http_server.h"
+#include "strahler/http/http_types.h"
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/post.hpp>

@@ -1,0 +1,31 @@
+#pragma once
+
+#include "worker_pool.h"
+
+#include "strahler/construction/world_data.h"
+#include "strahler/http/http_types.h"
+
+#include <functional>
+#include <future>
+#include <memory>
+#include <string>
+
+namespace strahler::app {
+
+/// A world's rivers.geojson, as text and gzipped.
+struct RiversText {
+  std::shared_ptr<const std::string> plain; ///< The GeoJSON.
+  std::shared_ptr<const std::string> gzip;  ///< The same, one gzip member.
+};
+
+/// Starts writing (and gzipping) the rivers.geojson of `world` on a thread of its own: a large
+/// world's takes seconds, which the server does not wait for. `world` must outlive the future.
+std::shared_future<RiversText> writeRiversAsync(const construction::WorldData& world);
+
+/// Answers GET rivers.geojson (route "rivers"), gzipped if `gzip`: at once when `rivers` is
+/// written, else from a worker of `pool` that waits for it (503 with Retry-After when the pool
+/// refuses or drops the wait), so that no I/O thread waits.
+void answerRivers(const std::shared_future<RiversText>& rivers, bool gzip,
+                  service::WorkerPool& pool, std::function<void(http::Response)> done);
+
+} // namespace strahler::app

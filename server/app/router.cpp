@@ -1,0 +1,30 @@
+#include "router.h"
+
+namespace strahler::app {
+
+Route routeOf(const std::vector<std::string>& s) {
+  if (s.empty())
+    return {Endpoint::kIndex, {}};
+  if (s.size() == 1 && s[0] == "game")
+    return {Endpoint::kGame, {}};
+  if (s.size() == 1 && s[0] == "health")
+    return {Endpoint::kHealth, {}};
+  if (s.size() == 1 && s[0] == "metrics")
+    return {Endpoint::kMetrics, {}};
+  if (s[0] != "worlds")
+    return {Endpoint::kStaticFile, {}};
+  if (s.size() == 1)
+    return {Endpoint::kWorldList, {}};
+  Route route{Endpoint::kNoSuchResource, s[1]};
+  if (s.size() == 2)
+    route.endpoint = Endpoint::kWorld;
+  else if (s.size() == 3 && s[2] == "tilejson.json")
+    route.endpoint = Endpoint::kTileJson;
+  else if (s.size() == 3 && s[2] == "rivers.geojson")
+    route.endpoint = Endpoint::kRivers;
+  else if (s.size() == 6 && (s[2] == "tiles" || s[2] == "local"))
+    route.endpoint = Endpoint::kTile;
+  return route;
+}
+
+} // namespace strahler::app

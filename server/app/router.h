@@ -1,0 +1,33 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace strahler::app {
+
+/// The resources of the server's contract (DESIGN.md), as the router tells them apart.
+enum class Endpoint {
+  kIndex,          ///< /: the viewer, or a list of the worlds.
+  kGame,           ///< /game: the viewer's game.html.
+  kHealth,         ///< /health.
+  kMetrics,        ///< /metrics (Prometheus).
+  kWorldList,      ///< /worlds.
+  kWorld,          ///< /worlds/{id}: its metadata.
+  kTileJson,       ///< /worlds/{id}/tilejson.json.
+  kRivers,         ///< /worlds/{id}/rivers.geojson.
+  kTile,           ///< /worlds/{id}/{tiles|local}/{z}/{x}/{y}.{format} (parseTileRoute).
+  kNoSuchResource, ///< Anything else under /worlds/{id}: 404 once the world is known.
+  kStaticFile,     ///< Anything else: a file of the built viewer, or 404.
+};
+
+/// What a request target names: its endpoint and, under /worlds/{id}, the world.
+struct Route {
+  Endpoint endpoint = Endpoint::kStaticFile;
+  std::string world; ///< The {id} of /worlds/{id}/...; "" for the other endpoints.
+};
+
+/// The endpoint `segments` (parseTarget's, decoded) name, by their shape only: the world is not
+/// looked up and the tile route is not parsed yet.
+Route routeOf(const std::vector<std::string>& segments);
+
+} // namespace strahler::app

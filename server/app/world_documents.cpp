@@ -1,0 +1,72 @@
+#include "world_documents.h"
+
+#include <nlohmann/json.hpp>
+
+namespace strahler::app {
+namespace {
+
+using nlohmann::json;
+
+constexpr int kTileJsonMaxZoom = 16; // DEM detail advertised; deeper tiles are still served
+
+} // namespace
+
+std::string worldMetadataJson(const std::string& id, const construction::WorldData& data,
+                              const tiling::TileScheme& local) {
+  const LonLatBox b = worldBounds(data);
+  const geometry::Aabb root = local.localBounds({0, 0, 0});
+  const json metadata = {{"id", id},
+                         {"name", data.name},
+                         {"bounds", {b.west, b.south, b.east, b.north}},
+                         {"center", {data.projectionCenter.x, data.projectionCenter.y}},
+                         {"areaKm2", data.areaKm2()},
+                         {"nodes", data.network.nodes.size()},
+                         {"mouths", data.network.mouths.size()},
+                         {"terrainPrimitives", data.terrain.size()},
+                         {"riverPrimitives", data.rivers.size()},
+                         {"seed", data.params.seed},
+                         {"generatorVersion", data.generatorVersion},
+                         {"cacheKey", data.cacheKey},
+                         {"web", {{"minzoom", 0}, {"maxzoom", tiling::TileScheme::kMaxWebZoom}}},
+                         {"local",
+                          {{"minzoom", 0},
+                           {"maxzoom", local.maxZoom()},
+                           {"rootSouthWest", {root.min.x, root.min.y}},
+                           {"rootSide", root.size().x}}}};
+  return metadata.dump();
+}
+
+std::string worldListJson(const std::vector<const std::string*>& metadata) {
+  // What json::array of the parsed documents would dump: no spaces between the elements.
+  std::string list = "[";
+  for (const std::string* document : metadata) {
+    if (list.size() > 1)
+      list += ',';
+    list += *document;
+  }
+  return list + "]";
+}
+
+std::string tileJson(const std::string& id, const std::string& base, const LonLatBox& bounds,
+                     geometry::Vec2 center) {
+  const json tj = {{"tilejson", "3.0.0"},
+                   {"name", id},
+                   {"description", "strahler terrain (Terrain-RGB heightmap)"},
+                   {"version", "1.0.0"},
+                   {"scheme", "xyz"},
+                   {"tiles", {base + "/tiles/{z}/{x}/{y}.png"}},
+                   {"minzoom", 0},
+                   {"maxzoom", kTileJsonMaxZoom},
+                   {"bounds", {bounds.west, bounds.south, bounds.east, bounds.north}},
+                   {"center", {center.x, center.y, 9}},
+                   {"tileSize", 256},
+                   {"encoding", "mapbox"},
+                   {"attribution", "strahler"}};
+  return tj.dump();
+}
+
+std::string healthJson(std::size_t worlds) {
+  return json{{"status", "ok"}, {"worlds", worlds}}.dump();
+}
+
+} // namespace strahler::app

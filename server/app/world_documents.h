@@ -1,0 +1,32 @@
+#pragma once
+
+#include "world_bounds.h"
+
+#include "strahler/construction/world_data.h"
+#include "strahler/geometry/vec2.h"
+#include "strahler/tiling/tile_scheme.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace strahler::app {
+
+/// The metadata document of a served world (GET /worlds/{id}), as JSON text: its name, bounds,
+/// centre, size, generator and cache key, and the zooms of both pyramids (`local` is its local
+/// pyramid).
+std::string worldMetadataJson(const std::string& id, const construction::WorldData& data,
+                              const tiling::TileScheme& local);
+
+/// The document of GET /worlds: a JSON array of the worlds' metadata documents, in order.
+std::string worldListJson(const std::vector<const std::string*>& metadata);
+
+/// The TileJSON 3.0.0 document of world `id` (a MapLibre raster-dem source), whose tiles lie
+/// under the absolute URL `base` (".../worlds/{id}").
+std::string tileJson(const std::string& id, const std::string& base, const LonLatBox& bounds,
+                     geometry::Vec2 center);
+
+/// The document of GET /health.
+std::string healthJson(std::size_t worlds);
+
+} // namespace strahler::app
