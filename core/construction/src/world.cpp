@@ -1,6 +1,7 @@
 #include "strahler/construction/world.h"
 
 #include "evaluation_lanes.h"
+#include "tributaries.h"
 
 #include "strahler/base/lanes.h"
 #include "strahler/base/random.h"
@@ -20,6 +21,7 @@ using geometry::Vec2;
 constexpr double kGridCell = 500.0; // m
 constexpr std::uint64_t kNoiseStream = 0x746572726e6full;
 constexpr std::uint64_t kGullyStream = 0x67756c6c79ull;
+constexpr std::uint64_t kTributaryStream = 0x7472696275746172ull;
 constexpr double kShelfReach = CoastShape::kShelfReach;
 
 /// A radius with a margin far above the rounding of distances between coordinates: points
@@ -66,6 +68,63 @@ const detail::OctaveFades& fadesAt(double spacing) noexcept {
 
 } // namespace
 
+namespace detail {
+/// The world as the tributary network reads it.
+class WorldTributarySource final : public TributarySource {
+public:
+  explicit WorldTributarySource(const World& world) : world_(world) {}
+  double controlHeight(Vec2 p) const override { return world_.controlHeight(p); }
+  bool onLand(Vec2 p) const override { return world_.land_.contains(p); }
+  double groundHeight(Vec2 p, double spacing) const override {
+    return world_.uncarvedHeight(p, spacing);
+  }
+  bool nearestRiver(Vec2 p, double reach, ChannelPoint& out) const override {
+    const World& w = world_;
+    const double cell = w.riverGrid_.cellSize();
+    std::vector<std::uint32_t>& seen = scratch();
+    seen.clear();
+    for (double y = p.y - reach; y < p.y + reach + cell; y += cell)
+      for (double x = p.x - reach; x < p.x + reach + cell; x += cell) {
+        const Vec2 q{std::min(x, p.x + reach), std::min(y, p.y + reach)};
+        for (const World::RiverCandidate& c : w.riverCells_[w.riverGrid_.cellIndexAt(q)])
+          seen.push_back(c.id);
+      }
+    std::sort(seen.begin(), seen.end());
+    seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+    double best2 = reach * reach;
+    bool found = false;
+    for (const std::uint32_t id : seen) {
+      const World::HotRiver& hot = w.hotRivers_[id];
+      for (std::uint32_t k = 0; k < hot.segmentCount; ++k) {
+        const World::HotSegment& g = w.hotSegments_[hot.segmentBegin + k];
+        const Vec2 from = p - g.a;
+        const double t =
+            std::clamp((from.x * g.ab.x + from.y * g.ab.y) * g.inverseLength2, 0.0, 1.0);
+        const Vec2 e = from - g.ab * t;
+        const double d2 = e.x * e.x + e.y * e.y;
+        if (d2 < best2) {
+          best2 = d2;
+          found = true;
+          const std::size_t at = 2 * std::size_t{hot.segmentBegin + k};
+          out.position = g.a + g.ab * t;
+          out.downstream = geometry::normalize(g.ab);
+          out.elevation = w.water_[at] + w.water_[at + 1] * t;
+        }
+      }
+    }
+    out.distance = std::sqrt(best2);
+    return found;
+  }
+
+private:
+  static std::vector<std::uint32_t>& scratch() {
+    thread_local std::vector<std::uint32_t> ids;
+    return ids;
+  }
+  const World& world_;
+};
+} // namespace detail
+
 double octaveFade(double wavelength, double spacing) noexcept {
   if (spacing <= 0.0)
     return 1.0;
@@ -75,7 +134,12 @@ double octaveFade(double wavelength, double spacing) noexcept {
 World::World(WorldData data)
     : data_(std::move(data)), land_(data_.land), terrainGrid_(worldBounds(data_), kGridCell),
       riverGrid_(worldBounds(data_), kGridCell), noise_(data_.params.seed ^ kNoiseStream),
-      gullySeed_(static_cast<std::uint32_t>(base::mixHash(data_.params.seed, kGullyStream))) {
+      gullySeed_(static_cast<std::uint32_t>(base::mixHash(data_.params.seed, kGullyStream))),
+      tributaries_(data_.params.tributaryLevels > 0
+                       ? std::make_shared<detail::Tributaries>(
+                             base::mixHash(data_.params.seed, kTributaryStream),
+                             data_.params.tributaryLevels)
+                       : nullptr) {
   hot_.reserve(data_.terrain.size());
   for (const primitives::TerrainPrimitive& t : data_.terrain) {
     const double radius2 = t.radius * t.radius;
@@ -150,6 +214,35 @@ World::World(WorldData data)
         riverCells_[c].push_back(candidate);
     }
   }
+}
+
+double World::controlHeight(Vec2 p) const noexcept {
+  double weight = 0.0, height = 0.0;
+  for (const std::uint32_t i : terrainGrid_.cellAt(p)) {
+    const HotTerrain& t = hot_[i];
+    const Vec2 d = p - t.center;
+    const double d2 = d.x * d.x + d.y * d.y;
+    if (d2 >= t.radius2)
+      continue;
+    const double u = 1.0 - d2 * t.inverseRadius2;
+    weight += u * u;
+    height += u * u * (t.elevation + t.slope.x * d.x + t.slope.y * d.y);
+  }
+  return weight > 0.0 ? height / weight : 0.0;
+}
+
+double World::uncarvedHeight(Vec2 p, double spacing) const noexcept {
+  double h = 0.0, w = 0.0;
+  Sample river;
+  terrainLanes(1, &p, nullptr, {spacing, spacing}, terrainGrid_.cellAt(p), &h, &w);
+  riversLanes(1, &p, spacing, &h, riverCells_[riverGrid_.cellIndexAt(p)], &river.h, &river.w);
+  return shapeCoast(p, {h, w}, river, Coast::kUnknown);
+}
+
+double World::carveTributaries(Vec2 p, double h, double spacing) const {
+  if (!tributaries_ || !(h > 0.0))
+    return h;
+  return tributaries_->carve(detail::WorldTributarySource(*this), p, h, spacing);
 }
 
 double World::riverReach(std::uint32_t i) const noexcept {
@@ -257,7 +350,7 @@ World::Evaluation World::evaluateFrom(Vec2 p, double spacing,
   e.terrain = {h, w};
   e.rivers = river;
   e.tree = replace(e.terrain, e.rivers).h;
-  e.height = shapeCoast(p, e.terrain, e.rivers, coast);
+  e.height = carveTributaries(p, shapeCoast(p, e.terrain, e.rivers, coast), spacing);
   return e;
 }
 
@@ -330,12 +423,15 @@ void World::finishGroup(const Vec2* group, double spacing, const double* h, cons
   const std::size_t n = heights.size();
   if (shore.coast == Coast::kInland) { // shapeCoast()'s inland case, without a call per sample
     for (std::size_t l = 0; l < n; ++l)
-      heights[l] = replace({h[l], w[l]}, {riverH[l], riverW[l]}).h;
+      heights[l] =
+          carveTributaries(group[l], replace({h[l], w[l]}, {riverH[l], riverW[l]}).h, spacing);
     return;
   }
   if (shore.coast != Coast::kUnknown || !shore.segments) { // far at sea, or unknown
     for (std::size_t l = 0; l < n; ++l)
-      heights[l] = shapeCoast(group[l], {h[l], w[l]}, {riverH[l], riverW[l]}, shore.coast);
+      heights[l] = carveTributaries(
+          group[l], shapeCoast(group[l], {h[l], w[l]}, {riverH[l], riverW[l]}, shore.coast),
+          spacing);
     return;
   }
   std::array<double, kLanes> onLand, shore2, out;
@@ -349,7 +445,8 @@ void World::finishGroup(const Vec2* group, double spacing, const double* h, cons
     insideLand(group, onLand.data());
   detail::coastLanes(
       {h, w, riverH.data(), riverW.data(), onLand.data(), shore2.data(), out.data()});
-  std::copy_n(out.begin(), n, heights.begin());
+  for (std::size_t l = 0; l < n; ++l)
+    heights[l] = carveTributaries(group[l], out[l], spacing);
 }
 
 } // namespace strahler::construction

@@ -28,7 +28,7 @@ struct Field {
 };
 
 // The JSON keys in canonical order; seed and constraints follow.
-constexpr std::array<Field, 26> kFields{{
+constexpr std::array<Field, 27> kFields{{
     {"edgeLength", &Params::edgeLength},
     {"sigma", &Params::sigma},
     {"delta", &Params::delta},
@@ -55,6 +55,7 @@ constexpr std::array<Field, 26> kFields{{
     {"braidedMinFlow", &Params::braidedMinFlow},
     {"braidedMaxDistance", &Params::braidedMaxDistance},
     {"deltaMinFlow", &Params::deltaMinFlow},
+    {"tributaryLevels", &Params::tributaryLevels}, // canonical only when not 0
 }};
 
 std::string quoted(std::string_view key) {
@@ -358,6 +359,7 @@ base::Status validateParams(const Params& p) {
       {"braidedMinFlow", p.braidedMinFlow, 0.0, kInf, true, false, "m³/s"},
       {"braidedMaxDistance", p.braidedMaxDistance, 0.0, kInf, true, false, "m"},
       {"deltaMinFlow", p.deltaMinFlow, 0.0, kInf, true, false, "m³/s"},
+      {"tributaryLevels", double(p.tributaryLevels), 0.0, 3.0, true, true, ""},
   };
   for (const Range& r : ranges)
     STRAHLER_RETURN_IF_ERROR(checkRange(r));
@@ -411,6 +413,8 @@ base::Result<Params> parseParams(std::string_view json, const InputLimits& limit
 std::string canonicalJson(const Params& params) {
   std::string out = "{";
   for (const Field& f : kFields) {
+    if (std::string_view(f.name) == "tributaryLevels" && params.tributaryLevels == 0)
+      continue; // worlds from before it keep their canonical text
     out += "\"" + std::string(f.name) + "\":";
     if (auto* d = std::get_if<double Params::*>(&f.member))
       out += formatNumber(params.*(*d));

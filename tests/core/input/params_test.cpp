@@ -107,6 +107,9 @@ TEST(Params, EveryRangeIsEnforced) {
       {R"({"angleJitter": 61})", ErrorCode::kOutOfRange, "'angleJitter'"},
       {R"({"fillBranches": 3})", ErrorCode::kOutOfRange, "'fillBranches' = 3 is outside [1, 2]"},
       {R"({"fillBranches": 0})", ErrorCode::kOutOfRange, "'fillBranches' = 0 is outside [1, 2]"},
+      {R"({"tributaryLevels": 4})", ErrorCode::kOutOfRange,
+       "'tributaryLevels' = 4 is outside [0, 3]"},
+      {R"({"tributaryLevels": -1})", ErrorCode::kOutOfRange, "'tributaryLevels' = -1"},
       {R"({"slopeMin": 0.1, "slopeMax": 0.05})", ErrorCode::kInvalidInput,
        "'slopeMin' = 0.1 must not exceed 'slopeMax' = 0.05"},
       {R"({"slopeMax": 0.7})", ErrorCode::kInvalidInput, "'slopeMax' = 0.7 must be less than"},
@@ -248,6 +251,20 @@ TEST(Params, CanonicalJsonHasAFixedKeyOrder) {
   EXPECT_NE(text.find(R"("deltaMinFlow":6,"seed":1,"constraints":[]})"), std::string::npos) << text;
   EXPECT_EQ(text.find(' '), std::string::npos);
   EXPECT_EQ(parseParams(text).value(), Params{});
+}
+
+TEST(Params, TributaryLevelsAreInTheCanonicalJsonOnlyWhenSet) {
+  // Worlds made before the option existed keep their canonical text (and cache keys).
+  EXPECT_EQ(canonicalJson(Params{}).find("tributaryLevels"), std::string::npos);
+  Params p;
+  p.tributaryLevels = 2;
+  const std::string text = canonicalJson(p);
+  EXPECT_NE(text.find(R"("deltaMinFlow":6,"tributaryLevels":2,"seed":1)"), std::string::npos)
+      << text;
+  auto parsed = parseParams(text);
+  ASSERT_TRUE(parsed.ok()) << parsed.error().message;
+  EXPECT_EQ(parsed.value().tributaryLevels, 2);
+  EXPECT_EQ(parseParams(R"({"tributaryLevels": 3})").value().tributaryLevels, 3);
 }
 
 } // namespace

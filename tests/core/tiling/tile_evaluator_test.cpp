@@ -58,6 +58,32 @@ TEST(TileEvaluator, RestrictedEvaluationEqualsTheWholeWorld) {
   EXPECT_GT(compared, 10000u);
 }
 
+TEST(TileEvaluator, TributaryTilesEqualTheWholeWorld) {
+  // Tributaries (params.tributaryLevels) are carved per sample from regions of curves built per
+  // thread: tiles still equal the whole world bit for bit, at zooms where every level shows.
+  construction::WorldData data = islandWorld().data();
+  data.params.tributaryLevels = 3;
+  const construction::World world(std::move(data));
+  const TileEvaluator evaluator(world);
+  const Vec2 c = world.data().projectionCenter;
+  std::size_t compared = 0, carved = 0;
+  for (const int z : {12, 14, 16}) {
+    const TileId tile = webTileAt(c.x, c.y, z);
+    const SampleGrid grid =
+        z == 14 ? webScheme().meshGrid(tile, 32) : webScheme().rasterGrid(tile, 64);
+    const std::vector<double> fast = evaluator.evaluate(grid);
+    const std::vector<double> plain = TileEvaluator(islandWorld()).evaluate(grid);
+    for (std::size_t k = 0; k < grid.points.size(); ++k) {
+      const double slow = world.height(grid.points[k], grid.rowSpacing[k / grid.width]);
+      ASSERT_EQ(std::memcmp(&fast[k], &slow, sizeof slow), 0)
+          << "tile " << z << "/" << tile.x << "/" << tile.y << " sample " << k;
+      carved += fast[k] < plain[k];
+      ++compared;
+    }
+  }
+  EXPECT_GT(carved, compared / 10);
+}
+
 TEST(TileEvaluator, LowZoomTilesEqualTheWholeWorld) {
   // Samples kilometres apart: the island falls in a few bins holding every primitive.
   const construction::World& world = islandWorld();

@@ -8,10 +8,16 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 
 namespace strahler::construction {
+
+namespace detail {
+class Tributaries;
+class WorldTributarySource;
+} // namespace detail
 
 /// How the relief meets the sea: a beach ramp on land and a smooth shelf below sea level.
 struct CoastShape {
@@ -179,6 +185,14 @@ public:
   static constexpr double kMaxRoughness = 0.95;
 
 private:
+  friend class detail::WorldTributarySource;
+  /// The terrain primitives' planes blended at p, without noise or rivers (0 where none
+  /// covers p): the smooth height the tributaries are routed over.
+  double controlHeight(geometry::Vec2 p) const noexcept;
+  /// The height at p before the tributaries are carved.
+  double uncarvedHeight(geometry::Vec2 p, double spacing) const noexcept;
+  /// The height `h` at p with the tributaries' valleys carved (p on land, h > 0).
+  double carveTributaries(geometry::Vec2 p, double h, double spacing) const;
   /// B(T…) at `lanes` points into h, w: 1 (scalar code, at first[0]) or base::kLanes (vector
   /// code) at `first` and, if not null, base::kLanes more at `second` (their results follow
   /// the first's), samples spacing[0] and spacing[1] apart; the same bits either way.
@@ -224,7 +238,8 @@ private:
   std::vector<HotTerrain> hot_; // per terrain primitive
   double terrainReach_ = 0.0;
   noise::LatticeNoise noise_;
-  std::uint32_t gullySeed_ = 0; // shuffles the gully octaves' phases
+  std::uint32_t gullySeed_ = 0;                            // shuffles the gully octaves' phases
+  std::shared_ptr<const detail::Tributaries> tributaries_; // drainage below the graph's scale
 };
 
 /// Vector instruction sets the evaluator can run on; every one gives the same bits.

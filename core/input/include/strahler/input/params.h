@@ -92,6 +92,12 @@ struct Params {
   double braidedMaxDistance = 3000.0; ///< ... within this river distance of its mouth.
   double deltaMinFlow = 6.0; ///< m³/s; a mouth with this flow is a D delta. Rosgen values ≥ 0.
 
+  // --- Drainage below the river graph's scale (issue 25; experimental) ---
+  /// Levels of procedural tributaries carved at evaluation time (400, 200, 100 m cells), in
+  /// [0, 3]; 0 (the default) carves none. Left out of the canonical JSON when 0, so worlds
+  /// without it keep their cache keys. Costly: tiles are evaluated tens of times slower.
+  int tributaryLevels = 0;
+
   std::uint64_t seed = 1; ///< Seed of every random choice; JSON: an integer, or a decimal string.
 
   std::vector<ConstraintSource> constraints; ///< Constraint images, ≤ kMaxConstraints.

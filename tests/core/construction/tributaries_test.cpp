@@ -1,0 +1,128 @@
+#include "test_worlds.h"
+
+#include "strahler/base/random.h"
+#include "strahler/construction/world.h"
+#include "strahler/construction/world_builder.h"
+#include "strahler/quality/drainage.h"
+#include "strahler/quality/world_raster.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <memory>
+#include <thread>
+#include <vector>
+
+namespace strahler::construction {
+namespace {
+
+using geometry::Vec2;
+
+/// The default island's data with `levels` tributary levels (generated once: the levels only
+/// change evaluation, so both worlds share the same vector description).
+const WorldData& islandData() {
+  static const WorldData data = [] {
+    input::WorldSpec spec = testing::defaultIslandSpec();
+    auto generated = generateWorldData(spec, "test");
+    EXPECT_TRUE(generated.ok()) << generated.error().message;
+    return std::move(generated).value();
+  }();
+  return data;
+}
+
+const World& islandWith(int levels) {
+  static std::unique_ptr<World> worlds[4];
+  if (!worlds[levels]) {
+    WorldData data = islandData();
+    data.params.tributaryLevels = levels;
+    worlds[levels] = std::make_unique<World>(std::move(data));
+  }
+  return *worlds[levels];
+}
+
+/// A 30 m grid of points over the middle of the island.
+std::vector<Vec2> middleGrid(int side) {
+  const geometry::Aabb box = islandWith(0).land().bounds();
+  const Vec2 c = (box.min + box.max) * 0.5;
+  std::vector<Vec2> points;
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i)
+      points.push_back(c + Vec2{(i - side / 2) * 30.0, (j - side / 2) * 30.0});
+  return points;
+}
+
+bool sameBits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+TEST(Tributaries, CarveValleysIntoTheLandAndNeverRaiseIt) {
+  const World& plain = islandWith(0);
+  const World& carved = islandWith(3);
+  std::size_t land = 0, lowered = 0;
+  for (const Vec2 p : middleGrid(120)) {
+    const double before = plain.height(p, 15.0), after = carved.height(p, 15.0);
+    ASSERT_LE(after, before) << p.x << ", " << p.y;
+    if (before > 0.0)
+      ++land;
+    if (after < before - 1.0)
+      ++lowered;
+  }
+  ASSERT_GT(land, 10000u);
+  // Valleys of every level cut a good part of the land (not a few pits).
+  EXPECT_GT(lowered, land / 5) << lowered << " of " << land;
+}
+
+TEST(Tributaries, ZeroLevelsLeaveTheWorldAsItWas) {
+  WorldData data = islandData();
+  const World same(std::move(data));
+  for (const Vec2 p : middleGrid(40))
+    ASSERT_TRUE(sameBits(same.height(p, 15.0), islandWith(0).height(p, 15.0)));
+}
+
+TEST(Tributaries, FadeOutWhereSamplesAreCoarserThanTheirCells) {
+  // The coarsest level (400 m cells) is gone at 200 m spacing and beyond.
+  for (const Vec2 p : middleGrid(40))
+    ASSERT_TRUE(sameBits(islandWith(3).height(p, 200.0), islandWith(0).height(p, 200.0)));
+  // One level is one level: at 30 m, levels 1..3 differ from each other somewhere.
+  std::size_t differ = 0;
+  for (const Vec2 p : middleGrid(40))
+    differ += !sameBits(islandWith(1).height(p, 30.0), islandWith(3).height(p, 30.0));
+  EXPECT_GT(differ, 0u);
+}
+
+TEST(Tributaries, SameBitsInAnyOrderOnAnyThread) {
+  // Each region of curves is built on first use and kept per thread: the heights must not
+  // depend on which points came first, nor on the thread.
+  const World& world = islandWith(3);
+  std::vector<Vec2> points = middleGrid(60);
+  base::Rng rng(3);
+  for (std::size_t i = points.size(); i > 1; --i)
+    std::swap(points[i - 1], points[rng.below(static_cast<std::uint32_t>(i))]);
+  std::vector<double> forward(points.size()), backward(points.size()), other(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    forward[i] = world.height(points[i], 20.0);
+  std::thread([&] {
+    for (std::size_t i = points.size(); i-- > 0;)
+      backward[i] = world.height(points[i], 20.0);
+    world.heights(points, 20.0, other); // runs of lanes
+  }).join();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    ASSERT_TRUE(sameBits(forward[i], backward[i])) << i;
+    ASSERT_TRUE(sameBits(forward[i], other[i])) << i;
+  }
+}
+
+TEST(Tributaries, TheCarvedLandStillDrains) {
+  // 60 m cells over the whole island, the graph's rivers burnt in as for every world: the
+  // tributaries' channels fall all the way to their junctions, so they add no pits.
+  const quality::DrainageReport plain =
+      quality::checkDrainage(quality::rasterizeWorld(islandWith(0), 60.0, 2), 1.0);
+  const quality::DrainageReport carved =
+      quality::checkDrainage(quality::rasterizeWorld(islandWith(3), 60.0, 2), 1.0);
+  EXPECT_GT(carved.landCells, 200000u);
+  EXPECT_GE(carved.drainingFraction, plain.drainingFraction - 0.005)
+      << carved.pits << " pits, largest " << carved.largestUndrainedAreaKm2 << " km²";
+}
+
+} // namespace
+} // namespace strahler::construction
