@@ -353,9 +353,35 @@ TEST(HeightmapEncoder, RejectsBadDimensions) {
 }
 
 TEST(HeightmapEncoder, AcceptsTheLargestSide) {
-  const HeightGrid grid{4096, 2, std::vector<float>(8192, 12.5f)};
-  for (const HeightmapFormat format : kAllFormats)
-    EXPECT_TRUE(encodeHeightmap(grid, format).ok());
+  // 4096 × 2 heights in steps of 0.5 m (exact in every format): every pixel decodes to its own.
+  HeightGrid grid{4096, 2, {}};
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4096; ++x)
+      grid.heights.push_back(static_cast<float>(0.5 * (x % 1000) + 600.0 * y - 100.0));
+  const auto expectHeights = [&](const std::vector<double>& decoded, HeightmapFormat format) {
+    ASSERT_EQ(decoded.size(), grid.heights.size()) << static_cast<int>(format);
+    for (std::size_t i = 0; i < decoded.size(); ++i)
+      ASSERT_NEAR(decoded[i], grid.heights[i], 1e-6) << static_cast<int>(format) << " pixel " << i;
+  };
+  for (const HeightmapFormat format :
+       {HeightmapFormat::kTerrainRgb, HeightmapFormat::kTerrarium, HeightmapFormat::kPng16}) {
+    const DecodedPng png = decodePng(encode(grid, format));
+    EXPECT_EQ(png.header.width, 4096u);
+    EXPECT_EQ(png.header.height, 2u);
+    expectHeights(format == HeightmapFormat::kTerrainRgb  ? decodeTerrainRgb(png)
+                  : format == HeightmapFormat::kTerrarium ? decodeTerrarium(png)
+                                                          : decodePng16(png),
+                  format);
+  }
+  for (const auto& [format, container] :
+       {std::pair{HeightmapFormat::kTiff, image::FloatImageFormat::kTiff},
+        std::pair{HeightmapFormat::kExr, image::FloatImageFormat::kExr}}) {
+    const auto decoded = image::decodeFloatImage(encode(grid, format), container);
+    ASSERT_TRUE(decoded.ok()) << decoded.error().message;
+    EXPECT_EQ(decoded.value().width, 4096);
+    EXPECT_EQ(decoded.value().height, 2);
+    expectHeights({decoded.value().pixels.begin(), decoded.value().pixels.end()}, format);
+  }
 }
 
 TEST(HeightmapEncoder, RejectsAnUnknownFormat) {

@@ -148,6 +148,8 @@ TEST(CoastlineRepair, RandomSelfCrossingRingsGiveValidLandOrAPreciseError) {
     ASSERT_EQ(first.ok(), second.ok());
     if (!first.ok()) {
       EXPECT_EQ(first.error().code, ErrorCode::kInvalidInput) << first.error().message;
+      EXPECT_EQ(first.error().message.find("the repair left a defect"), std::string::npos)
+          << "the repair's output failed the reader's checks: " << first.error().message;
       EXPECT_EQ(first.error().message, second.error().message);
       continue;
     }

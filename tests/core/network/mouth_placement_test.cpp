@@ -52,10 +52,14 @@ TEST(MouthPlacement, LakeShoresGetLowPriorityMouths) {
   const input::WorldSpec spec = testing::defaultIslandSpec();
   const geometry::PolygonIndex land(spec.land);
   const std::vector<MouthSite> mouths = placeMouths(spec, land).value();
+  std::size_t onLake = 0;
   for (const MouthSite& m : mouths)
     if (m.onLake) {
+      ++onLake;
       EXPECT_EQ(m.priority, 1);
     }
+  EXPECT_GT(onLake, 0u)
+      << "the default island's lake gets no mouth: the check above proves nothing";
 }
 
 TEST(MouthPlacement, UserMouthsReplaceAutomaticOnesAndSnapToTheShore) {
