@@ -1,3 +1,5 @@
+#include "result_matchers.h"
+
 #include "strahler/base/result.h"
 
 #include <gtest/gtest.h>
@@ -17,14 +19,14 @@ Result<int> quarter(int x) {
 }
 
 TEST(Result, CarriesValueOrError) {
-  EXPECT_EQ(half(4).value(), 2);
+  EXPECT_EQ(test_support::valueOf(half(4)), 2);
   EXPECT_FALSE(half(3).ok());
   EXPECT_EQ(half(3).error().message, "odd");
   EXPECT_EQ(half(3).error().code, ErrorCode::kInvalidInput);
 }
 
 TEST(Result, AssignOrReturnPropagatesTheFirstError) {
-  EXPECT_EQ(quarter(8).value(), 2);
+  EXPECT_EQ(test_support::valueOf(quarter(8)), 2);
   EXPECT_EQ(quarter(6).error().message, "odd");
   EXPECT_EQ(quarter(5).error().message, "odd");
 }

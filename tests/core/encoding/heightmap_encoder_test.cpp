@@ -1,4 +1,5 @@
 #include "png_encoder.h"
+#include "result_matchers.h"
 
 #include "strahler/encoding/heightmap_encoder.h"
 #include "strahler/image/image.h"
@@ -263,9 +264,9 @@ TEST(PngSettings, EverySettingDecodesToTheSameSamples) {
     for (int strategy = 0; strategy <= 3; ++strategy) {
       const detail::PngOptions options{1 + filter % 3, static_cast<detail::PngFilter>(filter),
                                        static_cast<detail::ZlibStrategy>(strategy)};
-      const auto png = detail::encodePng(samples, 40, 30, detail::PngLayout::kRgb8, options);
-      ASSERT_TRUE(png.ok()) << png.error().message;
-      EXPECT_EQ(decodePng(png.value()).samples, samples) << filter << " " << strategy;
+      STRAHLER_ASSIGN_OR_ASSERT(
+          const auto png, detail::encodePng(samples, 40, 30, detail::PngLayout::kRgb8, options));
+      EXPECT_EQ(decodePng(png).samples, samples) << filter << " " << strategy;
     }
 }
 
@@ -376,11 +377,11 @@ TEST(HeightmapEncoder, AcceptsTheLargestSide) {
   for (const auto& [format, container] :
        {std::pair{HeightmapFormat::kTiff, image::FloatImageFormat::kTiff},
         std::pair{HeightmapFormat::kExr, image::FloatImageFormat::kExr}}) {
-    const auto decoded = image::decodeFloatImage(encode(grid, format), container);
-    ASSERT_TRUE(decoded.ok()) << decoded.error().message;
-    EXPECT_EQ(decoded.value().width, 4096);
-    EXPECT_EQ(decoded.value().height, 2);
-    expectHeights({decoded.value().pixels.begin(), decoded.value().pixels.end()}, format);
+    STRAHLER_ASSIGN_OR_ASSERT(const auto decoded,
+                              image::decodeFloatImage(encode(grid, format), container));
+    EXPECT_EQ(decoded.width, 4096);
+    EXPECT_EQ(decoded.height, 2);
+    expectHeights({decoded.pixels.begin(), decoded.pixels.end()}, format);
   }
 }
 
@@ -474,9 +475,9 @@ TEST(HeightmapGolden, FloatFilesHoldTheGridBitForBit) {
   const std::pair<const GoldenCase&, image::FloatImageFormat> cases[] = {
       {kGolden[3], image::FloatImageFormat::kTiff}, {kGolden[4], image::FloatImageFormat::kExr}};
   for (const auto& [golden, container] : cases) {
-    const auto decoded = image::decodeFloatImage(readFile(goldenPath(golden)), container);
-    ASSERT_TRUE(decoded.ok()) << goldenPath(golden) << ": " << decoded.error().message;
-    EXPECT_EQ(decoded.value().pixels, grid.heights) << goldenPath(golden);
+    STRAHLER_ASSIGN_OR_ASSERT(const auto decoded,
+                              image::decodeFloatImage(readFile(goldenPath(golden)), container));
+    EXPECT_EQ(decoded.pixels, grid.heights) << goldenPath(golden);
   }
 }
 

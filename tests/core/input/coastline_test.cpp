@@ -14,35 +14,33 @@ namespace strahler::input {
 namespace {
 
 using base::ErrorCode;
-using testing::collectionJson;
-using testing::failsWith;
-using testing::featureJson;
-using testing::polygonCoordinates;
-using testing::polygonJson;
-using testing::RingPositions;
-using testing::square;
+using test_support::collectionJson;
+using test_support::failsWith;
+using test_support::featureJson;
+using test_support::polygonCoordinates;
+using test_support::polygonJson;
+using test_support::RingPositions;
+using test_support::square;
 
 TEST(Coastline, DefaultIslandHasOneIslandWithOneLake) {
-  auto land = parseCoastline(defaultCoastlineGeoJson());
-  ASSERT_TRUE(land.ok()) << land.error().message;
-  ASSERT_EQ(land.value().size(), 1u);
-  EXPECT_EQ(land.value()[0].holes.size(), 1u);
-  EXPECT_EQ(land.value()[0].outer.size(), 720u); // 721 positions minus the closing one
-  EXPECT_EQ(land.value()[0].holes[0].size(), 48u);
+  STRAHLER_ASSIGN_OR_ASSERT(auto land, parseCoastline(defaultCoastlineGeoJson()));
+  ASSERT_EQ(land.size(), 1u);
+  EXPECT_EQ(land[0].holes.size(), 1u);
+  EXPECT_EQ(land[0].outer.size(), 720u); // 721 positions minus the closing one
+  EXPECT_EQ(land[0].holes[0].size(), 48u);
 }
 
 TEST(Coastline, MallorcaParses) {
-  auto land = parseCoastline(testing::readTestData("mallorca.geojson"));
-  ASSERT_TRUE(land.ok()) << land.error().message;
-  EXPECT_EQ(land.value().size(), 1u);
+  STRAHLER_ASSIGN_OR_ASSERT(auto land,
+                            parseCoastline(test_support::readTestData("mallorca.geojson")));
+  EXPECT_EQ(land.size(), 1u);
 }
 
 TEST(Coastline, DropsTheClosingPositionAndRepeatedPositions) {
   const RingPositions ring{{0, 0}, {0, 0}, {1, 0}, {1, 1}, {1, 1}, {1, 1}, {0, 1}, {0, 0}};
-  auto land = parseCoastline(polygonJson({ring}));
-  ASSERT_TRUE(land.ok()) << land.error().message;
+  STRAHLER_ASSIGN_OR_ASSERT(auto land, parseCoastline(polygonJson({ring})));
   const geometry::Ring expected{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  EXPECT_EQ(land.value()[0].outer, expected);
+  EXPECT_EQ(land[0].outer, expected);
 }
 
 TEST(Coastline, AcceptsEveryPolygonContainerAndAltitudes) {
@@ -72,9 +70,8 @@ TEST(Coastline, IslandInsideALakeIsAllowed) {
   const std::string multi = R"({"type":"MultiPolygon","coordinates":[)" +
                             polygonCoordinates({square(0, 0, 10), lake}) + "," +
                             polygonCoordinates({square(4, 4, 1)}) + "]}";
-  auto land = parseCoastline(multi);
-  ASSERT_TRUE(land.ok()) << land.error().message;
-  EXPECT_EQ(land.value().size(), 2u);
+  STRAHLER_ASSIGN_OR_ASSERT(auto land, parseCoastline(multi));
+  EXPECT_EQ(land.size(), 2u);
 }
 
 TEST(Coastline, NotJson) {
@@ -262,9 +259,8 @@ TEST(Coastline, HundredThousandVerticesValidateInNearLinearTime) {
     ring.push_back({10.0 + radius * std::cos(angle), 40.0 + radius * std::sin(angle)});
   }
   ring.push_back(ring.front());
-  auto land = parseCoastline(polygonJson({ring}));
-  ASSERT_TRUE(land.ok()) << land.error().message;
-  EXPECT_EQ(land.value()[0].outer.size(), static_cast<std::size_t>(kCount));
+  STRAHLER_ASSIGN_OR_ASSERT(auto land, parseCoastline(polygonJson({ring})));
+  EXPECT_EQ(land[0].outer.size(), static_cast<std::size_t>(kCount));
 
   detail::ParsedPolygon polygon{"polygon 0", {detail::ParsedRing{}}};
   detail::ParsedRing& parsed = polygon.rings[0];

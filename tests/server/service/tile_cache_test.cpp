@@ -15,13 +15,13 @@
 namespace strahler::service {
 namespace {
 
-using testing::computeReturning;
-using testing::entryCharge;
-using testing::makeTile;
-using testing::ManualScheduler;
-using testing::OutcomeLog;
-using testing::runInline;
-using testing::Watchdog;
+using test_support::computeReturning;
+using test_support::entryCharge;
+using test_support::makeTile;
+using test_support::ManualScheduler;
+using test_support::OutcomeLog;
+using test_support::runInline;
+using test_support::Watchdog;
 
 /// Fetches `key` (computed inline as a tile of `size` bytes); returns the delivered tile.
 std::shared_ptr<const CachedTile> fetch(TileCache& cache, const std::string& key,
