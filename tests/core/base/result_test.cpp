@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 namespace strahler::base {
 namespace {
 
@@ -29,6 +31,34 @@ TEST(Result, AssignOrReturnPropagatesTheFirstError) {
   EXPECT_EQ(test_support::valueOf(quarter(8)), 2);
   EXPECT_EQ(quarter(6).error().message, "odd");
   EXPECT_EQ(quarter(5).error().message, "odd");
+}
+
+/// quarter() that says which step failed; `contexts` counts the contexts built.
+Result<int> quarterSaying(int x, int& contexts) {
+  const auto context = [&contexts](std::string what) {
+    ++contexts;
+    return what;
+  };
+  STRAHLER_ASSIGN_OR_RETURN(int h, half(x), context("halving " + std::to_string(x)));
+  STRAHLER_RETURN_IF_ERROR(half(h), context("halving again"));
+  return h / 2;
+}
+
+TEST(Result, AnOptionalContextGoesBeforeTheMessageOfAPassedOnError) {
+  int contexts = 0;
+  EXPECT_EQ(quarterSaying(5, contexts).error().message, "halving 5: odd");
+  EXPECT_EQ(quarterSaying(5, contexts).error().code, ErrorCode::kInvalidInput);
+  EXPECT_EQ(quarterSaying(6, contexts).error().message, "halving again: odd");
+  EXPECT_EQ(contexts, 3);
+  EXPECT_EQ(test_support::valueOf(quarterSaying(8, contexts)), 2);
+  EXPECT_EQ(contexts, 3) << "a context is built only for an error";
+}
+
+TEST(Result, WithContextKeepsTheCodeAndPrefixesTheMessage) {
+  const Error e = withContext(makeError(ErrorCode::kCorrupt, "bad CRC"), "world.bin");
+  EXPECT_EQ(e.code, ErrorCode::kCorrupt);
+  EXPECT_EQ(e.message, "world.bin: bad CRC");
+  EXPECT_EQ(withContext(makeError(ErrorCode::kCorrupt, "bad CRC")).message, "bad CRC");
 }
 
 TEST(ErrorCode, HasStableNames) {
