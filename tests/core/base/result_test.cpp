@@ -2,8 +2,10 @@
 
 #include "strahler/base/result.h"
 
+#include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <string>
 
 namespace strahler::base {
@@ -59,6 +61,20 @@ TEST(Result, WithContextKeepsTheCodeAndPrefixesTheMessage) {
   EXPECT_EQ(e.code, ErrorCode::kCorrupt);
   EXPECT_EQ(e.message, "world.bin: bad CRC");
   EXPECT_EQ(withContext(makeError(ErrorCode::kCorrupt, "bad CRC")).message, "bad CRC");
+}
+
+void assertOkOnAnError() {
+  STRAHLER_ASSERT_OK(half(3));
+}
+
+void assignOrAssertOnAnError() {
+  STRAHLER_ASSIGN_OR_ASSERT([[maybe_unused]] const int h, half(3));
+}
+
+TEST(TestSupport, ResultAssertionsFailOneTestWithTheExpressionCodeAndMessage) {
+  EXPECT_FATAL_FAILURE(assertOkOnAnError(), "half(3): invalid_input: odd");
+  EXPECT_FATAL_FAILURE(assignOrAssertOnAnError(), "half(3): invalid_input: odd");
+  EXPECT_THROW(test_support::valueOf(half(3)), std::runtime_error);
 }
 
 TEST(ErrorCode, HasStableNames) {
