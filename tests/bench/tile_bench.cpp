@@ -31,21 +31,22 @@ struct Fixture {
 };
 
 const Fixture& fixture() {
-  static const Fixture f(construction::generateWorldData(testing::mallorcaSpec(), "bench").value());
+  static const Fixture f(
+      construction::generateWorldData(test_support::mallorcaSpec(), "bench").value());
   return f;
 }
 
 /// Mallorca scaled ×4 in each direction: 58,000 km², 16 times the area (and the primitives).
 const Fixture& largeFixture() {
   static const Fixture f(
-      construction::generateWorldData(testing::scaledMallorcaSpec(4.0), "bench-x16").value());
+      construction::generateWorldData(test_support::scaledMallorcaSpec(4.0), "bench-x16").value());
   return f;
 }
 
 /// A web tile over land at zoom z (Mallorca's centre).
 tiling::TileId tileAt(int z) {
   const geometry::Vec2 c = fixture().world.data().projectionCenter;
-  return testing::webTileAt(c.x, c.y, z);
+  return test_support::webTileAt(c.x, c.y, z);
 }
 
 void BM_TileRestricted(benchmark::State& state) {
@@ -175,7 +176,7 @@ void BM_TileFixedCount(benchmark::State& state) {
 void BM_TileWorldSize(benchmark::State& state) {
   const Fixture& f = state.range(1) == 1 ? largeFixture() : fixture();
   const geometry::Vec2 c = f.world.data().projectionCenter;
-  const tiling::TileId tile = testing::webTileAt(c.x, c.y, static_cast<int>(state.range(0)));
+  const tiling::TileId tile = test_support::webTileAt(c.x, c.y, static_cast<int>(state.range(0)));
   const tiling::SampleGrid grid = f.web.rasterGrid(tile, 256);
   for (auto _ : state)
     benchmark::DoNotOptimize(f.evaluator.evaluate(grid));

@@ -24,7 +24,7 @@ using geometry::Vec2;
 /// change evaluation, so both worlds share the same vector description).
 const WorldData& islandData() {
   static const WorldData data = [] {
-    input::WorldSpec spec = testing::defaultIslandSpec();
+    input::WorldSpec spec = test_support::defaultIslandSpec();
     auto generated = generateWorldData(spec, "test");
     EXPECT_TRUE(generated.ok()) << generated.error().message;
     return std::move(generated).value();
@@ -129,7 +129,7 @@ TEST(Tributaries, TheCarvedLandStillDrains) {
 TEST(Tributaries, RiversWanderUnderThem) {
   // With tributaries the graph's rivers wander at two scales, straight (B) ones too; without,
   // a B river keeps close to its edge. Ends (the nodes) stay where they were.
-  input::WorldSpec spec = testing::defaultIslandSpec();
+  input::WorldSpec spec = test_support::defaultIslandSpec();
   spec.params.tributaryLevels = 3;
   auto wandering = generateWorldData(spec, "test");
   ASSERT_TRUE(wandering.ok()) << wandering.error().message;
