@@ -28,6 +28,7 @@ namespace strahler::tiling {
 /// (the caller tests each).
 class IntervalRun {
 public:
+  /// The intervals [lo[i], hi[i]] (lo and hi of one size).
   IntervalRun(std::vector<double> lo, std::vector<double> hi)
       : lo_(std::move(lo)), hi_(std::move(hi)) {
     increasing_ = std::is_sorted(lo_.begin(), lo_.end()) && std::is_sorted(hi_.begin(), hi_.end());
@@ -76,6 +77,7 @@ private:
 /// cleared.
 class IdList {
 public:
+  /// Empties the list, keeping its storage.
   void clear() noexcept { size_ = 0; }
   /// Appends `id` with `key` if `keep`.
   void appendIf(std::uint32_t id, float key, bool keep) {
@@ -90,6 +92,7 @@ public:
     std::uint32_t* ids;
     float* keys;
   };
+  /// Room for `most` entries past the end (grown when needed).
   Room room(std::size_t most) {
     while (size_ + most > capacity_)
       grow();
@@ -144,11 +147,14 @@ public:
   void reset(const SampleGrid& grid, std::span<const geometry::Aabb> runBoxes, int groups, int rows,
              const geometry::Aabb& reach, bool withTerrain);
 
+  /// How many bins: perRow() · perColumn().
   std::size_t count() const noexcept { return static_cast<std::size_t>(nx_) * ny_; }
+  /// The bin holding the sample at (row, col) of the grid.
   std::size_t binOf(int row, int col) const noexcept {
     return static_cast<std::size_t>(row / rows_) * nx_ +
            static_cast<std::size_t>(col / base::kLanes / groups_);
   }
+  /// The box of the samples of bin (i, j): column i, row j (empty for a bin of no sample).
   const geometry::Aabb& box(int i, int j) const noexcept {
     return boxView_[static_cast<std::size_t>(j) * nx_ + i];
   }
@@ -159,6 +165,7 @@ public:
     int i0 = 0, i1 = 0, j0 = 0, j1 = 0;
     int size() const noexcept { return (i1 - i0) * (j1 - j0); }
   };
+  /// The bins whose column and row meet `box`.
   Range rangeOf(const geometry::Aabb& box) const noexcept {
     if (!monotone())
       return {0, nx_, 0, ny_};
@@ -245,6 +252,7 @@ public:
   /// Sorts the rivers added into the bins' lists; must follow the last addition of a river.
   void finish();
 
+  /// The terrain primitives listed in `bin`, in the order added.
   std::span<const std::uint32_t> terrain(std::size_t bin) const noexcept {
     return terrain_[bin].items();
   }
@@ -252,10 +260,13 @@ public:
   std::span<const float> terrainKeys(std::size_t bin) const noexcept {
     return terrain_[bin].keys();
   }
+  /// The rivers listed in `bin`, ascending, with their runs near it (after finish()).
   std::span<const construction::World::RiverCandidate> rivers(std::size_t bin) const noexcept {
     return {rivers_.data() + riverBegin_[bin], rivers_.data() + riverBegin_[bin + 1]};
   }
+  /// Bins per row of bins (columns).
   int perRow() const noexcept { return nx_; }
+  /// Bins per column of bins (rows).
   int perColumn() const noexcept { return ny_; }
 
 private:
@@ -270,8 +281,8 @@ private:
 
   int groups_ = 1, rows_ = 1, nx_ = 0, ny_ = 0;
   std::vector<geometry::Aabb> boxes_;
-  std::span<const geometry::Aabb>
-      boxView_; // the bins' boxes: boxes_, or the run boxes given to reset()
+  // The bins' boxes: boxes_, or the run boxes given to reset().
+  std::span<const geometry::Aabb> boxView_;
   std::optional<IntervalRun> columns_, rows_run_;
   std::vector<std::size_t> reachable_; // bins meeting `reach`, when not monotone
   Pairs<construction::World::RiverCandidate> riverPairs_;
