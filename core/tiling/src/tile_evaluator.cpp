@@ -100,9 +100,8 @@ Gathered gatherBlocks(const BlockIndex& index, const construction::WorldData& da
   return g;
 }
 
-/// Makes the scratch's bins those of `grid`, empty.
-void resetBins(const SampleGrid& grid, const Aabb& reach, Scratch& scratch) {
-  const auto [groups, rows] = binShape(grid);
+/// Makes the scratch's bins those of `grid` (of `groups` runs by `rows` rows), empty.
+void resetBins(const SampleGrid& grid, int groups, int rows, const Aabb& reach, Scratch& scratch) {
   Bins::runBoxes(grid, scratch.runBoxes);
   scratch.bins.reset(grid, scratch.runBoxes, groups, rows, reach, true);
   // Rivers are thin beside a bin: they get bins one row high, so a run searches only the
@@ -350,7 +349,8 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
     return heights;
   const Gathered gathered = gatherBlocks(blocks_, data, grid.bounds);
   Scratch& scratch = threadScratch();
-  resetBins(grid, gathered.reach, scratch);
+  const auto [groups, rows] = binShape(grid);
+  resetBins(grid, groups, rows, gathered.reach, scratch);
   const construction::InstructionSet instructions = construction::instructionSet();
   // Blocks are ascending and their ranges contiguous, so primitive ids arrive ascending.
   for (const base::BlockId b : gathered.blocks) {
@@ -362,8 +362,7 @@ std::vector<double> TileEvaluator::evaluate(const SampleGrid& grid, TileStats* s
   scratch.bins.finish();
   scratch.riverBins.finish();
   const Shores shores = classifyShores(world_.land(), scratch.bins);
-  RunEvaluator(world_, grid, scratch, shores, binShape(grid).second, instructions, heights)
-      .evaluateAll();
+  RunEvaluator(world_, grid, scratch, shores, rows, instructions, heights).evaluateAll();
   releaseLargeScratch(grid, scratch);
   if (stats)
     *stats = gathered.stats;
