@@ -96,7 +96,7 @@ void BM_TileAllPrimitives(benchmark::State& state) {
   std::iota(terrain.begin(), terrain.end(), 0u);
   std::vector<construction::World::RiverCandidate> rivers;
   for (std::uint32_t i = 0; i < f.world.data().rivers.size(); ++i)
-    rivers.push_back(f.world.wholeRiver(i));
+    rivers.push_back(f.world.wholeRiver(base::PrimitiveId(i)));
   for (auto _ : state)
     for (std::size_t k = 0; k < grid.points.size(); ++k)
       benchmark::DoNotOptimize(

@@ -206,8 +206,8 @@ World::World(WorldData data)
     // Points land in a cell by a rounded division: a little slack around its box.
     const geometry::Aabb box = riverGrid_.cellBox(c).expanded(1e-6 * riverGrid_.cellSize());
     for (const std::uint32_t i : riverGrid_.cell(c)) {
-      const std::span<const geometry::Aabb> chunks = riverChunks(i);
-      const geometry::Aabb near = box.expanded(riverReach(i));
+      const std::span<const geometry::Aabb> chunks = riverChunks(base::PrimitiveId(i));
+      const geometry::Aabb near = box.expanded(riverReach(base::PrimitiveId(i)));
       RiverCandidate candidate{i, 0, 0};
       for (std::uint32_t k = 0; k < chunks.size(); ++k)
         if (chunks[k].intersects(near)) {
@@ -250,8 +250,8 @@ double World::carveTributaries(Vec2 p, double h, double spacing) const {
   return tributaries_->carve(detail::WorldTributarySource(*this), p, h, spacing);
 }
 
-double World::riverReach(std::uint32_t i) const noexcept {
-  return hotRivers_[i].reach;
+double World::riverReach(base::PrimitiveId i) const noexcept {
+  return hotRivers_[i.index()].reach;
 }
 
 void World::terrainLanes(std::size_t lanes, const Vec2* first, const Vec2* second,

@@ -202,7 +202,7 @@ TEST(World, PairedRunsEqualSingleHeights) {
     terrain[i] = i;
   std::vector<World::RiverCandidate> rivers;
   for (std::uint32_t i = 0; i < world.data().rivers.size(); ++i)
-    rivers.push_back(world.wholeRiver(i));
+    rivers.push_back(world.wholeRiver(base::PrimitiveId(i)));
   constexpr std::size_t kRun = base::kLanes;
   for (int pair = 0; pair < 40; ++pair) {
     std::vector<Vec2> first, second;
