@@ -24,7 +24,7 @@ constexpr double kSkipShare = 0.35;
 /// How far (m) above the ground a channel's head lies.
 constexpr double kHeadroom = 15.0;
 /// Most depth (m) of each level's channels below the ground.
-constexpr std::array<double, Tributaries::kLevels> kDepth{110.0, 55.0, 28.0};
+constexpr std::array<double, Tributaries::kLevels> kDepth{110.0, 55.0, 16.0};
 /// The least rise (m) from a junction to a head for the head to get a channel.
 constexpr double kLeastRise = 2.0;
 /// Regions kept per thread before the cache is emptied.
