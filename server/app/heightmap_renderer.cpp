@@ -29,11 +29,9 @@ encoding::HeightmapFormat heightmapFormat(TileFormat f) {
 base::Result<RenderedTile> HeightmapRenderer::render(const RenderContext& context,
                                                      const TileRequest& request, int size) const {
   RenderedTile out;
-  auto start = RenderClock::now();
-  const tiling::SampleGrid grid = context.scheme.rasterGrid(request.tile, size);
-  const std::vector<double> heights = context.evaluator.evaluate(grid, &out.stats);
-  out.evaluateMs = millisecondsSince(start);
-  start = RenderClock::now();
+  const std::vector<double> heights =
+      evaluateGrid(context, context.scheme.rasterGrid(request.tile, size), out);
+  const auto start = RenderClock::now();
   encoding::HeightGrid g{size, size, std::vector<float>(heights.begin(), heights.end())};
   const encoding::HeightmapFormat f = heightmapFormat(request.format);
   STRAHLER_ASSIGN_OR_RETURN(out.bytes, encoding::encodeHeightmap(g, f));

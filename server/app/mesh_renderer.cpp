@@ -27,11 +27,9 @@ double meshPositionError(double vertexSpacing) noexcept {
 base::Result<RenderedTile> MeshRenderer::render(const RenderContext& context,
                                                 const TileRequest& request, int size) const {
   RenderedTile out;
-  auto start = RenderClock::now();
-  const tiling::SampleGrid grid = context.scheme.meshGrid(request.tile, size);
-  const std::vector<double> heights = context.evaluator.evaluate(grid, &out.stats);
-  out.evaluateMs = millisecondsSince(start);
-  start = RenderClock::now();
+  const std::vector<double> heights =
+      evaluateGrid(context, context.scheme.meshGrid(request.tile, size), out);
+  const auto start = RenderClock::now();
   encoding::MeshGridInput input;
   input.quads = size;
   std::tie(input.origin, input.spacing) = context.scheme.meshFrame(request.tile, size);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "render_clock.h"
 #include "tile_request.h"
 
 #include "strahler/base/result.h"
@@ -7,6 +8,7 @@
 #include "strahler/tiling/tile_scheme.h"
 
 #include <string>
+#include <vector>
 
 namespace strahler::app {
 
@@ -27,6 +29,16 @@ struct RenderContext {
 
 /// Makes the bytes of one kind of tile (TileKind). It knows nothing of transports or caches:
 /// a new kind of tile is a new renderer registered with the TileService. Thread-safe.
+/// The heights of `grid` from the context's evaluator, into `out`'s evaluateMs and stats: the
+/// first step of every renderer.
+inline std::vector<double> evaluateGrid(const RenderContext& context,
+                                        const tiling::SampleGrid& grid, RenderedTile& out) {
+  const auto start = RenderClock::now();
+  std::vector<double> heights = context.evaluator.evaluate(grid, &out.stats);
+  out.evaluateMs = millisecondsSince(start);
+  return heights;
+}
+
 class TileRenderer {
 public:
   virtual ~TileRenderer() = default;

@@ -1,5 +1,7 @@
 #include "strahler/quality/hack_law.h"
 
+#include "line_fit.h"
+
 #include "strahler/analysis/river_profiles.h"
 #include "strahler/blocks/block_set.h"
 
@@ -13,25 +15,12 @@ namespace {
 HackFit fitLogLog(const std::vector<double>& x, const std::vector<double>& y) {
   HackFit fit;
   fit.points = x.size();
-  if (x.size() < 2)
+  const detail::LineFit line = detail::fitLine(x, y);
+  if (std::isnan(line.slope))
     return fit;
-  const double n = double(x.size());
-  double mx = 0, my = 0;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    mx += x[i], my += y[i];
-  mx /= n;
-  my /= n;
-  double sxx = 0, sxy = 0, syy = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    sxx += (x[i] - mx) * (x[i] - mx);
-    sxy += (x[i] - mx) * (y[i] - my);
-    syy += (y[i] - my) * (y[i] - my);
-  }
-  if (sxx <= 0)
-    return fit;
-  fit.exponent = sxy / sxx;
-  fit.coefficient = std::pow(10.0, my - fit.exponent * mx);
-  fit.r2 = syy > 0 ? sxy * sxy / (sxx * syy) : 1.0;
+  fit.exponent = line.slope;
+  fit.coefficient = std::pow(10.0, line.intercept);
+  fit.r2 = line.r2;
   return fit;
 }
 

@@ -1,5 +1,7 @@
 #include "strahler/quality/horton.h"
 
+#include "line_fit.h"
+
 #include "strahler/base/assert.h"
 
 #include <algorithm>
@@ -31,25 +33,6 @@ double streamLength(const RiverNetwork& net, const RiverNode& head) {
   return length;
 }
 
-/// Slope of the least-squares line through (x[i], y[i]); NaN with fewer than 2 points.
-double leastSquaresSlope(const std::vector<double>& x, const std::vector<double>& y) {
-  if (x.size() < 2)
-    return std::numeric_limits<double>::quiet_NaN();
-  double meanX = 0.0, meanY = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    meanX += x[i];
-    meanY += y[i];
-  }
-  meanX /= double(x.size());
-  meanY /= double(x.size());
-  double sxy = 0.0, sxx = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    sxy += (x[i] - meanX) * (y[i] - meanY);
-    sxx += (x[i] - meanX) * (x[i] - meanX);
-  }
-  return sxy / sxx;
-}
-
 /// Fills the two ratios from the per-order counts and mean lengths.
 void fitRatios(HortonStatistics& stats) {
   std::vector<double> order, logCount, logLength;
@@ -60,8 +43,8 @@ void fitRatios(HortonStatistics& stats) {
     logCount.push_back(std::log(double(stats.streamCount[k])));
     logLength.push_back(std::log(stats.meanStreamLength[k]));
   }
-  stats.bifurcationRatio = std::exp(-leastSquaresSlope(order, logCount));
-  stats.lengthRatio = std::exp(leastSquaresSlope(order, logLength));
+  stats.bifurcationRatio = std::exp(-detail::fitLine(order, logCount).slope);
+  stats.lengthRatio = std::exp(detail::fitLine(order, logLength).slope);
 }
 
 } // namespace

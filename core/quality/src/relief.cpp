@@ -1,6 +1,7 @@
 #include "strahler/quality/relief.h"
 
 #include "d8_grid.h"
+#include "line_fit.h"
 
 #include "strahler/base/assert.h"
 #include "strahler/geometry/distance_transform.h"
@@ -56,28 +57,6 @@ bool hasLandCross(const HeightRaster& r, int x, int y) {
   const std::size_t w = std::size_t(r.width), i = std::size_t(y) * w + std::size_t(x);
   return isLand(r, i) && isLand(r, i - 1) && isLand(r, i + 1) && isLand(r, i - w) &&
          isLand(r, i + w);
-}
-
-/// Least-squares line y = a + m x; returns {m, r²} (NaN with < 2 points or no spread in x).
-std::pair<double, double> fitLine(const std::vector<std::pair<double, double>>& points) {
-  const double n = double(points.size());
-  if (points.size() < 2)
-    return {kNaN, kNaN};
-  double sx = 0, sy = 0;
-  for (const auto& [x, y] : points)
-    sx += x, sy += y;
-  const double mx = sx / n, my = sy / n;
-  double sxx = 0, sxy = 0, syy = 0;
-  for (const auto& [x, y] : points) {
-    sxx += (x - mx) * (x - mx);
-    sxy += (x - mx) * (y - my);
-    syy += (y - my) * (y - my);
-  }
-  if (sxx <= 0)
-    return {kNaN, kNaN};
-  const double m = sxy / sxx;
-  const double r2 = syy > 0 ? (sxy * sxy) / (sxx * syy) : 1.0;
-  return {m, r2};
 }
 
 /// One pass of a 1-D kernel along x (step 1) or y (step width) over `in`, into `out`.
@@ -175,12 +154,14 @@ SlopeAreaFit fitSlopeArea(const HeightRaster& raster, const FlowField& flow) {
     if (slope > 0.0)
       bins[long(std::floor(std::log10(flow.areaKm2[c]) / kBinWidth))].push_back(slope);
   }
-  std::vector<std::pair<double, double>> points;
+  std::vector<double> logArea, logSlope;
   for (auto& [bin, slopes] : bins)
-    if (slopes.size() >= kMinBin)
-      points.emplace_back((double(bin) + 0.5) * kBinWidth, std::log10(quantile(slopes, 0.5)));
-  const auto [m, r2] = fitLine(points);
-  return {-m, r2, points.size()};
+    if (slopes.size() >= kMinBin) {
+      logArea.push_back((double(bin) + 0.5) * kBinWidth);
+      logSlope.push_back(std::log10(quantile(slopes, 0.5)));
+    }
+  const detail::LineFit line = detail::fitLine(logArea, logSlope);
+  return {-line.slope, line.r2, logArea.size()};
 }
 
 SlopeStatistics measureSlopes(const HeightRaster& raster) {

@@ -1,5 +1,7 @@
 #include "strahler/quality/spectral_slope.h"
 
+#include "line_fit.h"
+
 #include "strahler/base/assert.h"
 #include "strahler/quality/fft.h"
 
@@ -33,22 +35,6 @@ std::vector<double> fftFrequencies(int n, double d) {
   for (int i = 0; i < n; ++i)
     f[std::size_t(i)] = double(i < positive ? i : i - n) * unit;
   return f;
-}
-
-/// Slope of the least-squares line through the points.
-double leastSquaresSlope(const std::vector<double>& x, const std::vector<double>& y) {
-  const double n = double(x.size());
-  double mx = 0, my = 0;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    mx += x[i], my += y[i];
-  mx /= n;
-  my /= n;
-  double sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    sxx += (x[i] - mx) * (x[i] - mx);
-    sxy += (x[i] - mx) * (y[i] - my);
-  }
-  return sxy / sxx;
 }
 
 } // namespace
@@ -107,7 +93,7 @@ double spectralSlope(const std::vector<double>& heights, int width, int height, 
     }
   if (bx.size() <= 3)
     return std::numeric_limits<double>::quiet_NaN();
-  return -leastSquaresSlope(bx, by);
+  return -detail::fitLine(bx, by).slope;
 }
 
 } // namespace strahler::quality
