@@ -1,5 +1,6 @@
 // Which peers' X-Forwarded-* headers the server believes.
 #include "result_matchers.h"
+
 #include "strahler/http/trusted_proxies.h"
 
 #include <gtest/gtest.h>
