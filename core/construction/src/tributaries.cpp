@@ -28,7 +28,7 @@ constexpr std::array<double, Tributaries::kLevels> kDepth{110.0, 55.0, 16.0};
 /// The least rise (m) from a junction to a head for the head to get a channel.
 constexpr double kLeastRise = 2.0;
 /// Regions kept per thread before the cache is emptied.
-constexpr std::size_t kCachedRegions = 768;
+constexpr std::size_t kCachedRegions = 256;
 
 std::atomic<std::uint64_t> serials{1};
 
