@@ -170,6 +170,8 @@ bool Tributaries::nearestCoarser(const TributarySource& world, int level, Vec2 p
           out.position = q;
           out.downstream = geometry::normalize(ab);
           out.elevation = c.water[k] + (c.water[k + 1] - c.water[k]) * t;
+          out.fall = length2 > 0.0 ? std::max(0.0, c.water[k] - c.water[k + 1]) / std::sqrt(length2)
+                                   : 0.0;
           out.distance = d;
         }
       }
@@ -270,7 +272,13 @@ std::shared_ptr<const Tributaries::Region> Tributaries::build(const TributarySou
         const double slope = channelSlope * (1.0 + fromJunction / length);
         const double water =
             k == 0 ? upper : std::max(std::min(c.water[k + 1] + slope * step, upper), deepest);
-        c.water[k] = std::max(water, c.water[k + 1] + 0.005 * step);
+        // Beside the parent upstream of the junction (where the curve bends to join it), never
+        // below the parent's own water there: the channel must not undercut its parent's bed.
+        const Vec2 q = c.points[k];
+        const double upstream = (parent.position.x - q.x) * parent.downstream.x +
+                                (parent.position.y - q.y) * parent.downstream.y;
+        const double beside = parent.elevation + parent.fall * std::max(0.0, upstream);
+        c.water[k] = std::max({water, beside, c.water[k + 1] + 0.005 * step});
       }
       c.support = kSupport[l];
       geometry::Aabb box;

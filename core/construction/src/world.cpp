@@ -114,6 +114,7 @@ public:
           out.position = q;
           out.downstream = geometry::normalize(g.ab);
           out.elevation = w.water_[at] + w.water_[at + 1] * t;
+          out.fall = std::max(0.0, -w.water_[at + 1]) * std::sqrt(g.inverseLength2);
           out.distance = std::sqrt(d2);
         }
       }

@@ -156,8 +156,9 @@ TEST(Tributaries, RiversWanderUnderThem) {
     wanderingSum += offset(after);
   }
   ASSERT_GT(straight, 50u);
-  EXPECT_GT(wanderingSum / straight, plainSum / straight + 20.0)
-      << plainSum / straight << " m against " << wanderingSum / straight << " m";
+  const double plainMean = plainSum / double(straight);
+  const double wanderingMean = wanderingSum / double(straight);
+  EXPECT_GT(wanderingMean, plainMean + 20.0) << plainMean << " m against " << wanderingMean << " m";
 }
 
 } // namespace
