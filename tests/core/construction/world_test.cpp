@@ -1,6 +1,5 @@
 #include "test_worlds.h"
 
-#include "strahler/base/lanes.h"
 #include "strahler/base/random.h"
 #include "strahler/construction/world.h"
 #include "strahler/construction/world_builder.h"
@@ -11,6 +10,7 @@
 #include "strahler/quality/river_agreement.h"
 #include "strahler/quality/river_profile.h"
 #include "strahler/quality/world_raster.h"
+#include "strahler/simd/lanes.h"
 
 #include <gtest/gtest.h>
 
@@ -202,7 +202,7 @@ TEST(World, PairedRunsEqualSingleHeights) {
   std::vector<World::RiverCandidate> rivers;
   for (std::uint32_t i = 0; i < world.data().rivers.size(); ++i)
     rivers.push_back(world.wholeRiver(i));
-  constexpr std::size_t kRun = base::kLanes;
+  constexpr std::size_t kRun = simd::kLanes;
   for (int pair = 0; pair < 40; ++pair) {
     std::vector<Vec2> first, second;
     for (std::size_t l = 0; l < kRun; ++l) {
