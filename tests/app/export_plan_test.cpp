@@ -1,5 +1,6 @@
 // Which tiles `strahler export` writes, and how it reads --zooms and --bbox.
 #include "export_plan.h"
+#include "result_matchers.h"
 
 #include <gtest/gtest.h>
 
@@ -8,14 +9,14 @@ namespace {
 using namespace strahler::app;
 
 TEST(ExportPlan, ParsesZoomRangesAndSingleZooms) {
-  EXPECT_EQ(parseZoomRange("0-14", 18).value(), (std::pair{0, 14}));
-  EXPECT_EQ(parseZoomRange("7", 18).value(), (std::pair{7, 7}));
+  EXPECT_EQ(strahler::test_support::valueOf(parseZoomRange("0-14", 18)), (std::pair{0, 14}));
+  EXPECT_EQ(strahler::test_support::valueOf(parseZoomRange("7", 18)), (std::pair{7, 7}));
   for (const char* bad : {"", "-", "3-", "-3", "a-b", "1-2-3", "5-3", "0-19", " 1-2", "1.5"})
     EXPECT_FALSE(parseZoomRange(bad, 18).ok()) << bad;
 }
 
 TEST(ExportPlan, ParsesBoxesAndRefusesMalformedOnes) {
-  const LonLatBox b = parseBbox("2.3,39.2,3.5,40.1").value();
+  STRAHLER_ASSIGN_OR_ASSERT(const LonLatBox b, parseBbox("2.3,39.2,3.5,40.1"));
   EXPECT_DOUBLE_EQ(b.west, 2.3);
   EXPECT_DOUBLE_EQ(b.north, 40.1);
   for (const char* bad : {"", "1,2,3", "1,2,3,4,5", "1,2,x,4", "3,2,1,4", "1,4,3,2", "-181,0,0,1",

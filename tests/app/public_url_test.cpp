@@ -1,4 +1,5 @@
 #include "public_url.h"
+#include "result_matchers.h"
 
 #include <gtest/gtest.h>
 
@@ -14,9 +15,8 @@ TEST(PublicUrl, AcceptsOriginsWithPortAndPathPrefixInOneSpelling) {
       {"http://[::1]:8080/x", "http://[::1]:8080/x"},
       {"http://[2001:DB8::1]", "http://[2001:db8::1]"}};
   for (const auto& [in, out] : good) {
-    const auto url = parsePublicUrl(in);
-    ASSERT_TRUE(url.ok()) << in << ": " << url.error().message;
-    EXPECT_EQ(url.value(), out) << in;
+    STRAHLER_ASSIGN_OR_ASSERT(const auto url, parsePublicUrl(in));
+    EXPECT_EQ(url, out) << in;
   }
 }
 
@@ -62,17 +62,20 @@ http::Request requestWith(bool trusted, std::vector<std::pair<std::string, std::
 TEST(RequestOrigin, PublicUrlThenTrustedForwardedHeadersThenTheLocalAddress) {
   const auto proxied = requestWith(true, {{"x-forwarded-proto", "HTTPS, http"},
                                           {"x-forwarded-host", " Maps.Example.org:8443 "}});
-  EXPECT_EQ(requestOrigin("https://cdn.example.com/p", proxied).value(),
+  EXPECT_EQ(test_support::valueOf(requestOrigin("https://cdn.example.com/p", proxied)),
             "https://cdn.example.com/p");
-  EXPECT_EQ(requestOrigin("", proxied).value(), "https://maps.example.org:8443");
-  EXPECT_EQ(requestOrigin("", requestWith(true, {})).value(), "http://127.0.0.1:8080");
-  EXPECT_EQ(requestOrigin("", requestWith(true, {{"x-forwarded-proto", "https"}})).value(),
-            "https://127.0.0.1:8080");
-  EXPECT_EQ(requestOrigin("", requestWith(true, {{"x-forwarded-host", "[2001:DB8::1]"}})).value(),
+  EXPECT_EQ(test_support::valueOf(requestOrigin("", proxied)), "https://maps.example.org:8443");
+  EXPECT_EQ(test_support::valueOf(requestOrigin("", requestWith(true, {}))),
+            "http://127.0.0.1:8080");
+  EXPECT_EQ(
+      test_support::valueOf(requestOrigin("", requestWith(true, {{"x-forwarded-proto", "https"}}))),
+      "https://127.0.0.1:8080");
+  EXPECT_EQ(test_support::valueOf(
+                requestOrigin("", requestWith(true, {{"x-forwarded-host", "[2001:DB8::1]"}}))),
             "http://[2001:db8::1]");
   auto untrusted = proxied;
   untrusted.fromTrustedProxy = false;
-  EXPECT_EQ(requestOrigin("", untrusted).value(), "http://127.0.0.1:8080");
+  EXPECT_EQ(test_support::valueOf(requestOrigin("", untrusted)), "http://127.0.0.1:8080");
 }
 
 TEST(RequestOrigin, RefusesMalformedForwardedHeadersNamingThem) {

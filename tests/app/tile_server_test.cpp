@@ -49,10 +49,10 @@ struct Running {
   http::Server server;
   explicit Running(std::size_t cacheBytes = 64u << 20, std::string publicUrl = "",
                    http::TrustedProxies trusted = {})
-      : tiles(
-            {{"island", construction::generateWorldData(strahler::testing::defaultIslandSpec(), "k")
-                            .value()}},
-            serverOptions(cacheBytes, std::move(publicUrl))),
+      : tiles({{"island",
+                construction::generateWorldData(strahler::test_support::defaultIslandSpec(), "k")
+                    .value()}},
+              serverOptions(cacheBytes, std::move(publicUrl))),
         server(
             options(std::move(trusted)),
             [this](const http::Request& r, std::function<void(http::Response)> done) {

@@ -20,8 +20,8 @@ namespace {
 /// Mallorca scaled ×2, ×4 and ×8 in each direction (4×, 16× and 64× the area).
 input::WorldSpec worldFor(std::int64_t which) {
   if (which == 0)
-    return testing::defaultIslandSpec();
-  return testing::scaledMallorcaSpec(static_cast<double>(std::int64_t{1} << (which - 1)));
+    return test_support::defaultIslandSpec();
+  return test_support::scaledMallorcaSpec(static_cast<double>(std::int64_t{1} << (which - 1)));
 }
 
 void setLabel(benchmark::State& state, const input::WorldSpec& spec) {

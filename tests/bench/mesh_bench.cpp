@@ -21,7 +21,7 @@ namespace {
 MeshGridInput tileInput(benchmark::State& state) {
   const int quads = static_cast<int>(state.range(0));
   // A 1.92 km tile at n = 64 (30 m spacing), the same extent at n = 256.
-  return testing::syntheticTile(quads, 1920.0 / quads, {3840.0, -1920.0}, 50.0, true);
+  return test_support::syntheticTile(quads, 1920.0 / quads, {3840.0, -1920.0}, 50.0, true);
 }
 
 Mesh tileMesh(benchmark::State& state) {
@@ -83,11 +83,11 @@ void BM_DracoTile(benchmark::State& state) {
 /// skirt), not the evaluation before them.
 void BM_ServedDracoTile(benchmark::State& state) {
   static const app::TileService service(
-      construction::generateWorldData(strahler::testing::mallorcaSpec(), "bench").value());
+      construction::generateWorldData(strahler::test_support::mallorcaSpec(), "bench").value());
   const int z = static_cast<int>(state.range(0));
   const geometry::Vec2 c = service.world().data().projectionCenter;
   app::TileRequest request;
-  request.tile = strahler::testing::webTileAt(c.x, c.y, z);
+  request.tile = strahler::test_support::webTileAt(c.x, c.y, z);
   request.format = app::TileFormat::kDraco;
   std::size_t bytes = 0;
   for (auto _ : state) {

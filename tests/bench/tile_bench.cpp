@@ -31,21 +31,22 @@ struct Fixture {
 };
 
 const Fixture& fixture() {
-  static const Fixture f(construction::generateWorldData(testing::mallorcaSpec(), "bench").value());
+  static const Fixture f(
+      construction::generateWorldData(test_support::mallorcaSpec(), "bench").value());
   return f;
 }
 
 /// Mallorca scaled ×4 in each direction: 58,000 km², 16 times the area (and the primitives).
 const Fixture& largeFixture() {
   static const Fixture f(
-      construction::generateWorldData(testing::scaledMallorcaSpec(4.0), "bench-x16").value());
+      construction::generateWorldData(test_support::scaledMallorcaSpec(4.0), "bench-x16").value());
   return f;
 }
 
 /// A web tile over land at zoom z (Mallorca's centre).
 tiling::TileId tileAt(int z) {
   const geometry::Vec2 c = fixture().world.data().projectionCenter;
-  return testing::webTileAt(c.x, c.y, z);
+  return test_support::webTileAt(c.x, c.y, z);
 }
 
 void BM_TileRestricted(benchmark::State& state) {
@@ -95,7 +96,7 @@ void BM_TileAllPrimitives(benchmark::State& state) {
   std::iota(terrain.begin(), terrain.end(), 0u);
   std::vector<construction::World::RiverCandidate> rivers;
   for (std::uint32_t i = 0; i < f.world.data().rivers.size(); ++i)
-    rivers.push_back(f.world.wholeRiver(i));
+    rivers.push_back(f.world.wholeRiver(base::PrimitiveId(i)));
   for (auto _ : state)
     for (std::size_t k = 0; k < grid.points.size(); ++k)
       benchmark::DoNotOptimize(
@@ -174,7 +175,7 @@ void BM_TileFixedCount(benchmark::State& state) {
 void BM_TileWorldSize(benchmark::State& state) {
   const Fixture& f = state.range(1) == 1 ? largeFixture() : fixture();
   const geometry::Vec2 c = f.world.data().projectionCenter;
-  const tiling::TileId tile = testing::webTileAt(c.x, c.y, static_cast<int>(state.range(0)));
+  const tiling::TileId tile = test_support::webTileAt(c.x, c.y, static_cast<int>(state.range(0)));
   const tiling::SampleGrid grid = f.web.rasterGrid(tile, 256);
   for (auto _ : state)
     benchmark::DoNotOptimize(f.evaluator.evaluate(grid));

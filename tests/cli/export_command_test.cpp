@@ -3,6 +3,7 @@
 #include "hilbert_tile_id.h"
 #include "pmtiles_format.h"
 #include "program_run.h"
+#include "result_matchers.h"
 #include "serve_process.h"
 #include "test_client.h"
 
@@ -22,16 +23,16 @@ namespace {
 namespace fs = std::filesystem;
 namespace pm = strahler::archive::pmtiles;
 using namespace std::chrono_literals;
-using strahler::testing::ProcessRun;
-using strahler::testing::readWholeFile;
+using strahler::test_support::ProcessRun;
+using strahler::test_support::readWholeFile;
 
 fs::path scratchDir() {
-  return strahler::testing::processScratchDir(fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch",
-                                              "export");
+  return strahler::test_support::processScratchDir(
+      fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch", "export");
 }
 
 ProcessRun strahler(const std::string& args) {
-  return strahler::testing::runProgram(STRAHLER_EXECUTABLE, args, scratchDir());
+  return strahler::test_support::runProgram(STRAHLER_EXECUTABLE, args, scratchDir());
 }
 
 /// The default island as a world file, generated once per test process.
@@ -62,11 +63,12 @@ std::vector<std::string> filesIn(const fs::path& dir) {
 
 /// The bytes of tile z/x/y in a PMTiles archive without leaf directories ("" if absent).
 std::string pmtilesTile(const std::string& file, int z, std::uint32_t x, std::uint32_t y) {
-  const pm::Header h = pm::decodeHeader(file).value();
-  const auto root = pm::decodeDirectory(
-      pm::decompress(file.substr(h.rootOffset, h.rootLength), h.internalCompression).value());
+  const pm::Header h = strahler::test_support::valueOf(pm::decodeHeader(file));
+  const auto root =
+      strahler::test_support::valueOf(pm::decodeDirectory(strahler::test_support::valueOf(
+          pm::decompress(file.substr(h.rootOffset, h.rootLength), h.internalCompression))));
   const std::uint64_t id = strahler::archive::zxyToTileId({z, x, y});
-  for (const pm::Entry& e : root.value())
+  for (const pm::Entry& e : root)
     if (e.runLength > 0 && e.tileId <= id && id < e.tileId + e.runLength)
       return file.substr(h.tileDataOffset + e.offset, e.length);
   return {};
@@ -108,7 +110,7 @@ TEST(ExportCommand, ArchiveTilesAreTheBytesTheServerSends) {
                                   " --zooms 10-12 --tile terrarium -o " + out.string());
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const std::string archive = readWholeFile(out);
-  strahler::testing::ServeProcess serve(
+  strahler::test_support::ServeProcess serve(
       {STRAHLER_EXECUTABLE, "serve", islandWorld().string(), "--quiet", "--port", "0"},
       "STRAHLER_CACHE_DIR=" + (scratchDir() / "cache").string());
   ASSERT_GT(serve.pid(), 0);
@@ -138,10 +140,10 @@ TEST(ExportCommand, ArchiveTilesAreTheBytesTheServerSends) {
 void interruptExport(int signal, const std::string& ext) {
   const fs::path dir = outputDir("interrupt-" + std::to_string(signal) + ext);
   const fs::path out = dir / ("big." + ext);
-  strahler::testing::ServeProcess run({STRAHLER_EXECUTABLE, "export", islandWorld().string(),
-                                       "--zooms", "0-16", "--threads", "1", "--quiet", "-o",
-                                       out.string()},
-                                      "");
+  strahler::test_support::ServeProcess run({STRAHLER_EXECUTABLE, "export", islandWorld().string(),
+                                            "--zooms", "0-16", "--threads", "1", "--quiet", "-o",
+                                            out.string()},
+                                           "");
   ASSERT_GT(run.pid(), 0);
   const fs::path temporary = out.string() + ".tmp." + std::to_string(run.pid());
   const auto deadline = std::chrono::steady_clock::now() + 60s;

@@ -1,4 +1,5 @@
 // Runs the real strahler program as a user would, and checks its outputs and exit codes.
+#include "ci_environment.h"
 #include "program_run.h"
 #include "test_client.h"
 
@@ -27,12 +28,12 @@ namespace {
 
 namespace fs = std::filesystem;
 using strahler::http::test::readLine;
-using strahler::testing::ProcessRun;
-using strahler::testing::runProgram;
+using strahler::test_support::ProcessRun;
+using strahler::test_support::runProgram;
 
 fs::path scratchDir() {
-  return strahler::testing::processScratchDir(fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch",
-                                              "generate");
+  return strahler::test_support::processScratchDir(
+      fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch", "generate");
 }
 
 /// Runs strahler with `args`, a cache in the build tree, and collects its output.
@@ -87,7 +88,7 @@ TEST(GenerateCommand, WritesTheNetworkAsGeoJsonAndAPicture) {
       "generate --quiet --coast " + std::string(STRAHLER_TEST_DATA_DIR) + "/mallorca.geojson -o " +
       geojson.string() + " --image " + png.string() + " --image-size 400");
   ASSERT_EQ(run.exitCode, 0) << run.err;
-  const auto rivers = nlohmann::json::parse(strahler::testing::readWholeFile(geojson));
+  const auto rivers = nlohmann::json::parse(strahler::test_support::readWholeFile(geojson));
   ASSERT_EQ(rivers["type"], "FeatureCollection");
   int lines = 0, mouths = 0;
   for (const auto& f : rivers["features"]) {
@@ -104,7 +105,7 @@ TEST(GenerateCommand, WritesTheNetworkAsGeoJsonAndAPicture) {
   }
   EXPECT_GT(lines, 100);
   EXPECT_GT(mouths, 5);
-  const std::string image = strahler::testing::readWholeFile(png);
+  const std::string image = strahler::test_support::readWholeFile(png);
   ASSERT_GT(image.size(), 24u);
   EXPECT_EQ(image.substr(1, 3), "PNG");
   // IHDR width, big-endian, at byte 16: the longer side is 400 pixels.
@@ -118,8 +119,8 @@ TEST(GenerateCommand, SameSeedSameBytesOtherSeedOtherNetwork) {
   ASSERT_EQ(strahler("generate --quiet --seed 5 -o " + a.string()).exitCode, 0);
   ASSERT_EQ(strahler("generate --quiet --seed 5 -o " + b.string()).exitCode, 0);
   ASSERT_EQ(strahler("generate --quiet --seed 6 -o " + c.string()).exitCode, 0);
-  EXPECT_EQ(strahler::testing::readWholeFile(a), strahler::testing::readWholeFile(b));
-  EXPECT_NE(strahler::testing::readWholeFile(a), strahler::testing::readWholeFile(c));
+  EXPECT_EQ(strahler::test_support::readWholeFile(a), strahler::test_support::readWholeFile(b));
+  EXPECT_NE(strahler::test_support::readWholeFile(a), strahler::test_support::readWholeFile(c));
 }
 
 TEST(GenerateCommand, SizeLimitsAreSetFromTheCommandLine) {
@@ -156,12 +157,13 @@ TEST(GenerateCommand, TwoFreshGenerationsWriteTheSameWorldBytes) {
     const auto summary = nlohmann::json::parse(r.out);
     EXPECT_FALSE(summary["fromCache"].get<bool>());
     EXPECT_TRUE(summary["stageSeconds"].contains("network")); // reported, not stored
-    bytes[run] = strahler::testing::readWholeFile(world);
+    bytes[run] = strahler::test_support::readWholeFile(world);
     // The cached copy is the same bytes too.
     int cached = 0;
     for (const auto& entry : fs::directory_iterator(dir / "cache")) {
       if (entry.path().extension() == ".world") {
-        EXPECT_TRUE(strahler::testing::readWholeFile(entry.path()) == bytes[run]) << entry.path();
+        EXPECT_TRUE(strahler::test_support::readWholeFile(entry.path()) == bytes[run])
+            << entry.path();
         ++cached;
       }
     }
@@ -239,7 +241,7 @@ TEST(WorldCommands, InfoRenderAndAnalyzeAWorldFile) {
   const fs::path png = scratchDir() / "relief.png";
   const ProcessRun render = strahler("render " + world.string() + " --size 300 -o " + png.string());
   ASSERT_EQ(render.exitCode, 0) << render.err;
-  EXPECT_EQ(strahler::testing::readWholeFile(png).substr(1, 3), "PNG");
+  EXPECT_EQ(strahler::test_support::readWholeFile(png).substr(1, 3), "PNG");
 
   const ProcessRun analyze = strahler("analyze " + world.string());
   ASSERT_EQ(analyze.exitCode, 0) << analyze.err;
@@ -391,7 +393,7 @@ TEST(WorldCommands, AnalyzeTheReferenceDem) {
   const fs::path dem =
       fs::path(STRAHLER_SOURCE_DIR) / ".." / "shared" / "reference" / "orkhon-valley-92m.asc";
   if (!fs::exists(dem))
-    GTEST_SKIP() << dem << " is absent";
+    STRAHLER_SKIP_UNLESS_CI(dem << " is absent");
   const ProcessRun run = strahler("analyze --dem " + dem.string());
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const auto relief = nlohmann::json::parse(run.out)["relief"];
@@ -443,7 +445,7 @@ TEST(WorldCommands, AnalyzeRejectsBadDems) {
 TEST(WorldCommands, RejectDamagedOrMissingWorldFiles) {
   const fs::path world = scratchDir() / "damaged.world";
   ASSERT_EQ(strahler("generate --quiet -o " + world.string()).exitCode, 0);
-  std::string bytes = strahler::testing::readWholeFile(world);
+  std::string bytes = strahler::test_support::readWholeFile(world);
   bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 1);
   std::ofstream(world, std::ios::binary | std::ios::trunc) << bytes;
   const ProcessRun damaged = strahler("info " + world.string());
@@ -490,7 +492,8 @@ TEST(TileCommand, WritesEveryFormatAndRejectsBadRequests) {
     const ProcessRun run = strahler(base + "--scheme local --z 2 --x 1 --y 2 --format " + format +
                                     " --size 32 -o " + out.string());
     ASSERT_EQ(run.exitCode, 0) << format << ": " << run.err;
-    EXPECT_EQ(strahler::testing::readWholeFile(out).substr(0, std::strlen(magic)), magic) << format;
+    EXPECT_EQ(strahler::test_support::readWholeFile(out).substr(0, std::strlen(magic)), magic)
+        << format;
   }
   const ProcessRun outside = strahler(base + "--z 3 --x 8 --y 0 --format png -o x.png");
   EXPECT_EQ(outside.exitCode, 1);

@@ -18,19 +18,19 @@ namespace {
 namespace fs = std::filesystem;
 using strahler::http::test::fetch;
 using strahler::http::test::getRequest;
-using strahler::testing::ProcessRun;
-using strahler::testing::readWholeFile;
-using strahler::testing::ServeProcess;
+using strahler::test_support::ProcessRun;
+using strahler::test_support::readWholeFile;
+using strahler::test_support::ServeProcess;
 using namespace std::chrono_literals;
 
 fs::path scratchDir() {
-  return strahler::testing::processScratchDir(fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch",
-                                              "package");
+  return strahler::test_support::processScratchDir(
+      fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch", "package");
 }
 
 /// Runs a shell command line (its standard error kept in the result).
 ProcessRun shell(const std::string& command) {
-  return strahler::testing::runProgram("", command + " 2>&1", scratchDir());
+  return strahler::test_support::runProgram("", command + " 2>&1", scratchDir());
 }
 
 /// The package CPack writes from this build tree, made once per test process.

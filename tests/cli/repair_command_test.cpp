@@ -22,12 +22,12 @@ namespace {
 
 namespace fs = std::filesystem;
 using strahler::http::test::readLine;
-using strahler::testing::ProcessRun;
-using strahler::testing::runProgram;
+using strahler::test_support::ProcessRun;
+using strahler::test_support::runProgram;
 
 fs::path scratchDir() {
-  return strahler::testing::processScratchDir(fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch",
-                                              "repair");
+  return strahler::test_support::processScratchDir(
+      fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch", "repair");
 }
 
 /// Runs strahler with `args`, a cache in the build tree, and collects its output.

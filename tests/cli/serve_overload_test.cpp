@@ -25,7 +25,7 @@ namespace {
 using strahler::http::test::Connection;
 using strahler::http::test::fetch;
 using strahler::http::test::getRequest;
-using strahler::testing::ServeProcess;
+using strahler::test_support::ServeProcess;
 using Clock = std::chrono::steady_clock;
 using namespace std::chrono_literals;
 

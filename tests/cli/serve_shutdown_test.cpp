@@ -33,7 +33,7 @@ constexpr int kClients = 200;
 
 TEST(ServeCommand, SigtermUnderLoadExitsWithinTheDrainWindow) {
   const std::string scratch = std::string(STRAHLER_BINARY_DIR) + "/cli_test_scratch/shutdown";
-  strahler::testing::ServeProcess serve(
+  strahler::test_support::ServeProcess serve(
       {STRAHLER_EXECUTABLE, "serve", "--quiet", "--port", "0", "--threads", "2", "--workers", "2"},
       "STRAHLER_CACHE_DIR=" + scratch);
   ASSERT_GT(serve.pid(), 0) << "cannot start " << STRAHLER_EXECUTABLE;

@@ -21,9 +21,9 @@ namespace {
 namespace fs = std::filesystem;
 using strahler::http::test::fetch;
 using strahler::http::test::getRequest;
-using strahler::testing::ProcessRun;
-using strahler::testing::runProgram;
-using strahler::testing::ServeProcess;
+using strahler::test_support::ProcessRun;
+using strahler::test_support::runProgram;
+using strahler::test_support::ServeProcess;
 using namespace std::chrono_literals;
 
 constexpr const char* kModule = "strahler_image_oiio.so";
@@ -37,8 +37,8 @@ constexpr bool kOpenImageIoAtStart = false;
 #endif
 
 fs::path scratchDir() {
-  return strahler::testing::processScratchDir(fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch",
-                                              "startup");
+  return strahler::test_support::processScratchDir(
+      fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch", "startup");
 }
 
 /// Runs `program args` with `environment` ("NAME=value ...", may be empty) before it.
@@ -91,7 +91,7 @@ bool mentionsOpenImageIo(const std::string& text) {
 
 /// The memory map of process `pid`.
 std::string mapsOf(pid_t pid) {
-  return strahler::testing::readWholeFile("/proc/" + std::to_string(pid) + "/maps");
+  return strahler::test_support::readWholeFile("/proc/" + std::to_string(pid) + "/maps");
 }
 
 TEST(Startup, HelpInfoAndIntegerAndMeshTilesNeverLoadOpenImageIo) {
@@ -124,7 +124,7 @@ TEST(Startup, FloatTilesLoadTheModuleAndItsOpenImageIo) {
     const std::string objects = joined(loadedObjects(r.err));
     EXPECT_NE(objects.find(kModule), std::string::npos) << objects;
     EXPECT_NE(objects.find("libOpenImageIO.so"), std::string::npos) << objects;
-    EXPECT_EQ(strahler::testing::readWholeFile(out).substr(0, magic.size()), magic) << format;
+    EXPECT_EQ(strahler::test_support::readWholeFile(out).substr(0, magic.size()), magic) << format;
   }
 }
 
@@ -219,7 +219,7 @@ TEST(Startup, TheInstalledProgramFindsItsModule) {
   const fs::path out = scratchDir() / "installed.exr";
   const ProcessRun r = run("", tileArgs("exr", out), program.string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_EQ(strahler::testing::readWholeFile(out).substr(0, 4), "v/1\x01");
+  EXPECT_EQ(strahler::test_support::readWholeFile(out).substr(0, 4), "v/1\x01");
   // And not by chance through the build tree: the module it loaded is the installed one.
   const ProcessRun traced = run("LD_DEBUG=files", tileArgs("exr", out), program.string());
   const std::string objects = joined(loadedObjects(traced.err));

@@ -113,7 +113,7 @@ int main(int argc, char** argv) {
   fs::create_directories(dir / "heightmaps");
   fs::create_directories(dir / "meshes");
   const app::TileService service(
-      construction::generateWorldData(testing::defaultIslandSpec(), "samples").value());
+      construction::generateWorldData(test_support::defaultIslandSpec(), "samples").value());
   // Web tiles over the island's centre at a coarse and a fine zoom; local tiles inland and at the
   // coast.
   const bool ok = heightmaps(service, dir / "heightmaps", {10, 434, 373}, "island-z10") &&

@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(dir);
   for (std::uint64_t seed = 1; seed <= 2; ++seed) {
     const std::string file =
-        strahler::store::encodeWorld(strahler::store::testing::makeSmallWorld(seed));
+        strahler::store::encodeWorld(strahler::store::test_support::makeSmallWorld(seed));
     const std::string payload = file.substr(strahler::store::kWorldHeaderBytes,
                                             file.size() - strahler::store::kWorldHeaderBytes -
                                                 strahler::store::kWorldTrailerBytes);

@@ -93,8 +93,13 @@ void TestServer::handle(const Request& request, std::function<void(Response)> do
   ++calls_;
   const std::string& target = request.target;
   if (target.rfind("/slow", 0) == 0) {
-    return later([target, done = std::move(done)] {
+    const int inFlight = ++slowInFlight_;
+    for (int peak = slowPeak_.load();
+         peak < inFlight && !slowPeak_.compare_exchange_weak(peak, inFlight);)
+      ;
+    return later([this, target, done = std::move(done)] {
       std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      --slowInFlight_;
       done(text(target));
     });
   }

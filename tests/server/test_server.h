@@ -56,6 +56,8 @@ public:
   int hungClientsGone() const;
   /// Number of handler calls so far.
   int handlerCalls() const { return calls_.load(); }
+  /// The most /slow requests that were being handled at one time so far.
+  int peakSlowInFlight() const { return slowPeak_.load(); }
   /// Calls the `done` of every /hang request with 200 (the server may be stopped by then).
   void releaseHung();
 
@@ -70,6 +72,8 @@ private:
   std::vector<std::shared_ptr<const std::atomic<bool>>> hungGone_;
   std::atomic<int> hung_{0};
   std::atomic<int> calls_{0};
+  std::atomic<int> slowInFlight_{0};
+  std::atomic<int> slowPeak_{0};
   Server server_;
 };
 

@@ -1,4 +1,5 @@
 // Which peers' X-Forwarded-* headers the server believes.
+#include "result_matchers.h"
 #include "strahler/http/trusted_proxies.h"
 
 #include <gtest/gtest.h>
@@ -23,7 +24,7 @@ TrustedProxies::Address address(const std::string& text) {
 }
 
 TEST(TrustedProxies, LoopbackMeansBothFamiliesLoopbackNetworks) {
-  const auto trusted = TrustedProxies::parse("loopback").value();
+  STRAHLER_ASSIGN_OR_ASSERT(const auto trusted, TrustedProxies::parse("loopback"));
   for (const char* in : {"127.0.0.1", "127.255.0.9", "::1", "::ffff:127.0.0.1"})
     EXPECT_TRUE(trusted.contains(address(in))) << in;
   for (const char* in : {"128.0.0.1", "10.0.0.1", "::2", "fe80::1", "::"})
@@ -31,20 +32,23 @@ TEST(TrustedProxies, LoopbackMeansBothFamiliesLoopbackNetworks) {
 }
 
 TEST(TrustedProxies, NetworksMatchTheirPrefixOnly) {
-  const auto trusted =
-      TrustedProxies::parse("172.16.0.0/12, 192.168.1.7,fd00::/8,0.0.0.0/32").value();
+  const auto trusted = test_support::valueOf(
+      TrustedProxies::parse("172.16.0.0/12, 192.168.1.7,fd00::/8,0.0.0.0/32"));
   for (const char* in : {"172.16.0.1", "172.31.255.255", "192.168.1.7", "fd12:3456::1", "0.0.0.0"})
     EXPECT_TRUE(trusted.contains(address(in))) << in;
   for (const char* in : {"172.32.0.1", "172.15.255.255", "192.168.1.8", "fe00::1", "127.0.0.1"})
     EXPECT_FALSE(trusted.contains(address(in))) << in;
-  EXPECT_TRUE(TrustedProxies::parse("0.0.0.0/0").value().contains(address("8.8.8.8")));
-  EXPECT_FALSE(TrustedProxies::parse("0.0.0.0/0").value().contains(address("2001:db8::1")))
+  EXPECT_TRUE(
+      test_support::valueOf(TrustedProxies::parse("0.0.0.0/0")).contains(address("8.8.8.8")));
+  EXPECT_FALSE(
+      test_support::valueOf(TrustedProxies::parse("0.0.0.0/0")).contains(address("2001:db8::1")))
       << "an IPv4 network holds IPv4 addresses only";
-  EXPECT_TRUE(TrustedProxies::parse("::/0").value().contains(address("2001:db8::1")));
+  EXPECT_TRUE(
+      test_support::valueOf(TrustedProxies::parse("::/0")).contains(address("2001:db8::1")));
 }
 
 TEST(TrustedProxies, NoneTrustsNobody) {
-  EXPECT_TRUE(TrustedProxies::parse("none").value().empty());
+  EXPECT_TRUE(test_support::valueOf(TrustedProxies::parse("none")).empty());
   EXPECT_TRUE(TrustedProxies().empty());
   EXPECT_FALSE(TrustedProxies().contains(address("127.0.0.1")));
 }

@@ -7,7 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-namespace strahler::testing {
+namespace strahler::test_support {
 
 std::filesystem::path processScratchDir(const std::filesystem::path& root,
                                         const std::string& name) {
@@ -45,4 +45,4 @@ ProcessRun runProgram(const std::string& executable, const std::string& args,
   return run;
 }
 
-} // namespace strahler::testing
+} // namespace strahler::test_support

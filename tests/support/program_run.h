@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-namespace strahler::testing {
+namespace strahler::test_support {
 
 /// What one run of a program printed, and how it ended (-1: it did not exit normally).
 struct ProcessRun {
@@ -24,4 +24,4 @@ std::string readWholeFile(const std::filesystem::path& path);
 ProcessRun runProgram(const std::string& executable, const std::string& args,
                       const std::filesystem::path& scratch);
 
-} // namespace strahler::testing
+} // namespace strahler::test_support

@@ -9,7 +9,7 @@
 
 extern char** environ;
 
-namespace strahler::testing {
+namespace strahler::test_support {
 
 ServeProcess::ServeProcess(const std::vector<std::string>& args,
                            const std::string& extraEnvironment) {
@@ -90,4 +90,4 @@ long ServeProcess::residentMb() const {
   return -1;
 }
 
-} // namespace strahler::testing
+} // namespace strahler::test_support

@@ -8,7 +8,7 @@
 #include <sys/types.h>
 #include <vector>
 
-namespace strahler::testing {
+namespace strahler::test_support {
 
 /// `strahler serve` (or any program) as a child of the test, so its exit status can be read;
 /// its stdout is piped to the test. Killed (SIGKILL) and reaped on destruction if still running.
@@ -40,4 +40,4 @@ private:
   std::FILE* out_ = nullptr;
 };
 
-} // namespace strahler::testing
+} // namespace strahler::test_support

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace strahler::testing {
+namespace strahler::test_support {
 namespace {
 
 input::WorldSpec specFrom(const std::string& name, std::string_view geojson, std::uint64_t seed) {
@@ -51,4 +51,4 @@ input::WorldSpec corsicaSpec(std::uint64_t seed) {
   return specFrom("corsica", readTestData("corsica.geojson"), seed);
 }
 
-} // namespace strahler::testing
+} // namespace strahler::test_support

@@ -4,7 +4,7 @@
 
 #include <string>
 
-namespace strahler::testing {
+namespace strahler::test_support {
 
 /// The embedded default island with default params (and `seed`).
 input::WorldSpec defaultIslandSpec(std::uint64_t seed = 1);
@@ -18,4 +18,4 @@ input::WorldSpec corsicaSpec(std::uint64_t seed = 1);
 /// Contents of a file in tests/data.
 std::string readTestData(const std::string& name);
 
-} // namespace strahler::testing
+} // namespace strahler::test_support

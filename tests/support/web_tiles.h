@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace strahler::testing {
+namespace strahler::test_support {
 
 /// The Web Mercator (XYZ) tile at zoom z that holds (lon, lat), in degrees. Header-only: only
 /// tests that link the tiling library include it.
@@ -16,4 +16,4 @@ inline tiling::TileId webTileAt(double lon, double lat, int z) {
           static_cast<std::int64_t>((1.0 - std::asinh(std::tan(latRad)) / M_PI) / 2.0 * n)};
 }
 
-} // namespace strahler::testing
+} // namespace strahler::test_support

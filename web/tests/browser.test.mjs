@@ -6,7 +6,7 @@ import { dirname, join } from 'node:path';
 import { after, before, describe, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
 import { launchBrowser, openPage } from './lib/browser.mjs';
-import { pixelAt, pixelStats } from './lib/pixels.mjs';
+import { changedShare, pixelAt, pixelStats } from './lib/pixels.mjs';
 import { exportDefaultWorld } from './lib/archive.mjs';
 import { startServer } from './lib/server.mjs';
 import { startStaticServer } from './lib/static-server.mjs';
@@ -149,8 +149,23 @@ describe('map viewer', () => {
   });
 
   test('the exaggeration slider changes the terrain', async () => {
+    // The rendered pixels, not the setting read back: under the 50° pitch, a relief three times
+    // as tall moves its ridges and shading on screen. A second look at the still map first: the
+    // comparison sees no change where there is none.
+    const canvas = page.locator('#map canvas');
+    const before = await canvas.screenshot();
+    const still = changedShare(before, await canvas.screenshot());
+    assert.ok(still < 0.001, `${(100 * still).toFixed(2)} % of the still canvas changed`);
+    await page.evaluate(() => {
+      window.strahlerIdleAgain = new Promise((resolve) => window.strahlerMap.once('idle', resolve));
+    });
     await page.locator('#exaggeration').fill('3');
-    assert.equal(await page.evaluate(() => window.strahlerMap.getTerrain().exaggeration), 3);
+    await page.evaluate((ms) => Promise.race([window.strahlerIdleAgain,
+      new Promise((resolve, reject) => setTimeout(() => reject(new Error('the map never became idle')), ms))]), STEP_MS);
+    const after = await canvas.screenshot();
+    writeFileSync(join(SCREENSHOTS, 'viewer-exaggeration-3.png'), after);
+    const changed = changedShare(before, after);
+    assert.ok(changed > 0.05, `only ${(100 * changed).toFixed(2)} % of the canvas changed`);
     assertNoErrors(record);
   });
 });

@@ -19,6 +19,8 @@ constexpr std::array<double, Tributaries::kLevels> kSupport{450.0, 250.0, 130.0}
 /// A channel's slope at its junction over the mean rise of the ground along it (twice that at
 /// its head).
 constexpr double kChannelShare = 0.55;
+/// Share of the cells of the finer levels left without a channel.
+constexpr double kSkipShare = 0.35;
 /// How far (m) above the ground a channel's head lies.
 constexpr double kHeadroom = 15.0;
 /// Most depth (m) of each level's channels below the ground.
@@ -100,6 +102,15 @@ ThreadCache& threadCache() {
 
 } // namespace
 
+double linkCost(Vec2 p, Vec2 q, Vec2 downhill) noexcept {
+  const Vec2 to = q - p;
+  const double d = length(to);
+  if (d <= 0.0)
+    return 0.0;
+  const double along = (to.x * downhill.x + to.y * downhill.y) / d; // cos of the angle, or 0
+  return d * (1.0 + 3.0 * (1.0 - along));
+}
+
 Tributaries::Tributaries(std::uint64_t seed, int levels)
     : seed_(seed), levels_(std::clamp(levels, 1, kLevels)), serial_(serials.fetch_add(1)) {}
 
@@ -127,9 +138,9 @@ std::shared_ptr<const Tributaries::Region> Tributaries::region(const TributarySo
 }
 
 bool Tributaries::nearestCoarser(const TributarySource& world, int level, Vec2 p, double reach,
-                                 ChannelPoint& out) const {
-  bool found = world.nearestRiver(p, reach, out);
-  double best = found ? out.distance : reach;
+                                 Vec2 downhill, ChannelPoint& out) const {
+  bool found = world.nearestRiver(p, reach, downhill, out);
+  double best = found ? linkCost(p, out.position, downhill) : std::numeric_limits<double>::max();
   for (int m = 0; m < level; ++m) {
     const double cell = kLevelCell[static_cast<std::size_t>(m)];
     const std::int64_t i = static_cast<std::int64_t>(std::floor(p.x / cell));
@@ -139,19 +150,28 @@ bool Tributaries::nearestCoarser(const TributarySource& world, int level, Vec2 p
     const double support = kSupport[static_cast<std::size_t>(m)];
     for (const Curve& c : r->curves) {
       geometry::Aabb raw{c.box.min + Vec2{support, support}, c.box.max - Vec2{support, support}};
-      if (boxGap2(raw, p) >= best * best)
-        continue;
-      const Nearest n = nearestOnCurve(c, p, 1); // not at its head
-      const double d = std::sqrt(n.distance2);
-      if (d < best) {
-        best = d;
-        found = true;
-        const Vec2 a = c.points[n.segment], b = c.points[n.segment + 1];
-        out.position = a + (b - a) * n.along;
-        out.downstream = geometry::normalize(b - a);
-        out.elevation =
-            c.water[n.segment] + (c.water[n.segment + 1] - c.water[n.segment]) * n.along;
-        out.distance = d;
+      const double gap2 = boxGap2(raw, p);
+      if (gap2 >= reach * reach || gap2 >= best * best)
+        continue;                                             // the cost is at least the distance
+      for (std::size_t k = 1; k + 1 < c.points.size(); ++k) { // not its first sixth (its head)
+        const Vec2 a = c.points[k], ab = c.points[k + 1] - a;
+        const double length2 = ab.x * ab.x + ab.y * ab.y;
+        const Vec2 ap = p - a;
+        const double t =
+            std::clamp(length2 > 0.0 ? (ap.x * ab.x + ap.y * ab.y) / length2 : 0.0, 0.0, 1.0);
+        const Vec2 q = a + ab * t;
+        const double d = distance(p, q);
+        if (d >= reach)
+          continue;
+        const double cost = linkCost(p, q, downhill);
+        if (cost < best) {
+          best = cost;
+          found = true;
+          out.position = q;
+          out.downstream = geometry::normalize(ab);
+          out.elevation = c.water[k] + (c.water[k + 1] - c.water[k]) * t;
+          out.distance = d;
+        }
       }
     }
   }
@@ -175,10 +195,22 @@ std::shared_ptr<const Tributaries::Region> Tributaries::build(const TributarySou
                           h4 = base::mixHash(h, 3);
       const Vec2 head{(static_cast<double>(i) + 0.15 + 0.7 * unit(h)) * cell,
                       (static_cast<double>(j) + 0.15 + 0.7 * unit(h2)) * cell};
+      // Not every cell of the finer levels holds a channel, and channels differ in depth:
+      // gullies of one size at every cell read as a combed pattern.
+      const std::uint64_t h5 = base::mixHash(h, 4);
+      if (level > 0 && unit(h5) < kSkipShare)
+        continue;
       if (!world.onLand(head))
         continue;
+      // Downhill on the control height (the primitives' planes), by central differences.
+      constexpr double kStep = 10.0;
+      const Vec2 gradient{
+          world.controlHeight(head + Vec2{kStep, 0}) - world.controlHeight(head - Vec2{kStep, 0}),
+          world.controlHeight(head + Vec2{0, kStep}) - world.controlHeight(head - Vec2{0, kStep})};
+      const double steepness = length(gradient);
+      const Vec2 downhill = steepness > 1e-9 ? gradient * (-1.0 / steepness) : Vec2{};
       ChannelPoint parent;
-      if (!nearestCoarser(world, level, head, kLinkReach[l], parent))
+      if (!nearestCoarser(world, level, head, kLinkReach[l], downhill, parent))
         continue;
       const double length = parent.distance;
       if (length < 0.25 * cell)
@@ -222,7 +254,8 @@ std::shared_ptr<const Tributaries::Region> Tributaries::build(const TributarySou
       c.sideSlope = 0.45 + 0.3 * unit(h4);
       // Deep enough to show, shallow enough that its sides reach the ground well within the
       // support (else the fading support leaves a circular step).
-      const double depth = std::min(kDepth[l], 0.6 * c.sideSlope * kSupport[l]);
+      const double depth = std::min(kDepth[l] * (0.4 + 0.9 * unit(base::mixHash(h, 5))),
+                                    0.6 * c.sideSlope * kSupport[l]);
       c.water[kCurvePoints - 1] = parent.elevation;
       double fromJunction = 0.0;
       for (std::size_t k = kCurvePoints - 1; k-- > 0;) {

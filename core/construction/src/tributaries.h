@@ -18,6 +18,12 @@ struct ChannelPoint {
   double distance = 0.0;     ///< from the point asked about, m
 };
 
+/// How far water from p goes to reach q when the ground falls along `downhill` (a unit
+/// vector, or zero on flat ground): the distance, up to four times it for a point across the
+/// slope and seven times for one uphill, so that heads drain down their slope (pinnate
+/// gullies) rather than to whatever channel is nearest.
+double linkCost(geometry::Vec2 p, geometry::Vec2 q, geometry::Vec2 downhill) noexcept;
+
 /// What the tributary network reads of its world (World implements it): the smooth control
 /// height (the terrain primitives' planes blended, no noise, no rivers), the nearest point of
 /// the river graph's channels within a distance, and whether a point lies on land.
@@ -26,8 +32,10 @@ public:
   virtual ~TributarySource() = default;
   /// The control height at p, m.
   virtual double controlHeight(geometry::Vec2 p) const = 0;
-  /// The nearest point of a river channel within `reach` of p, if any.
-  virtual bool nearestRiver(geometry::Vec2 p, double reach, ChannelPoint& out) const = 0;
+  /// The point of a river channel within `reach` of p that water from p reaches first
+  /// (linkCost()), if any.
+  virtual bool nearestRiver(geometry::Vec2 p, double reach, geometry::Vec2 downhill,
+                            ChannelPoint& out) const = 0;
   /// The height at p before any tributary is carved, for samples `spacing` apart, m.
   virtual double groundHeight(geometry::Vec2 p, double spacing) const = 0;
   /// Whether p lies on land.
@@ -77,10 +85,10 @@ public:
   /// The region (level, rx, ry), built on first use in this thread.
   std::shared_ptr<const Region> region(const TributarySource& world, int level, std::int64_t rx,
                                        std::int64_t ry) const;
-  /// The nearest channel point of any level coarser than `level` (rivers included) within
-  /// `reach` of p.
+  /// The channel point of any level coarser than `level` (rivers included) within `reach` of
+  /// p of least linkCost() along `downhill`.
   bool nearestCoarser(const TributarySource& world, int level, geometry::Vec2 p, double reach,
-                      ChannelPoint& out) const;
+                      geometry::Vec2 downhill, ChannelPoint& out) const;
 
 private:
   /// carve() for one level.

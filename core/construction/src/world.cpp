@@ -78,7 +78,7 @@ public:
   double groundHeight(Vec2 p, double spacing) const override {
     return world_.uncarvedHeight(p, spacing);
   }
-  bool nearestRiver(Vec2 p, double reach, ChannelPoint& out) const override {
+  bool nearestRiver(Vec2 p, double reach, Vec2 downhill, ChannelPoint& out) const override {
     const World& w = world_;
     const double cell = w.riverGrid_.cellSize();
     std::vector<std::uint32_t>& seen = scratch();
@@ -91,7 +91,8 @@ public:
       }
     std::sort(seen.begin(), seen.end());
     seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
-    double best2 = reach * reach;
+    const double reach2 = reach * reach;
+    double best = std::numeric_limits<double>::max();
     bool found = false;
     for (const std::uint32_t id : seen) {
       const World::HotRiver& hot = w.hotRivers_[id];
@@ -102,17 +103,21 @@ public:
             std::clamp((from.x * g.ab.x + from.y * g.ab.y) * g.inverseLength2, 0.0, 1.0);
         const Vec2 e = from - g.ab * t;
         const double d2 = e.x * e.x + e.y * e.y;
-        if (d2 < best2) {
-          best2 = d2;
+        if (d2 >= reach2)
+          continue;
+        const Vec2 q = g.a + g.ab * t;
+        const double cost = detail::linkCost(p, q, downhill);
+        if (cost < best) {
+          best = cost;
           found = true;
           const std::size_t at = 2 * std::size_t{hot.segmentBegin + k};
-          out.position = g.a + g.ab * t;
+          out.position = q;
           out.downstream = geometry::normalize(g.ab);
           out.elevation = w.water_[at] + w.water_[at + 1] * t;
+          out.distance = std::sqrt(d2);
         }
       }
     }
-    out.distance = std::sqrt(best2);
     return found;
   }
 
@@ -201,8 +206,8 @@ World::World(WorldData data)
     // Points land in a cell by a rounded division: a little slack around its box.
     const geometry::Aabb box = riverGrid_.cellBox(c).expanded(1e-6 * riverGrid_.cellSize());
     for (const std::uint32_t i : riverGrid_.cell(c)) {
-      const std::span<const geometry::Aabb> chunks = riverChunks(i);
-      const geometry::Aabb near = box.expanded(riverReach(i));
+      const std::span<const geometry::Aabb> chunks = riverChunks(base::PrimitiveId(i));
+      const geometry::Aabb near = box.expanded(riverReach(base::PrimitiveId(i)));
       RiverCandidate candidate{i, 0, 0};
       for (std::uint32_t k = 0; k < chunks.size(); ++k)
         if (chunks[k].intersects(near)) {
@@ -245,8 +250,8 @@ double World::carveTributaries(Vec2 p, double h, double spacing) const {
   return tributaries_->carve(detail::WorldTributarySource(*this), p, h, spacing);
 }
 
-double World::riverReach(std::uint32_t i) const noexcept {
-  return hotRivers_[i].reach;
+double World::riverReach(base::PrimitiveId i) const noexcept {
+  return hotRivers_[i.index()].reach;
 }
 
 void World::terrainLanes(std::size_t lanes, const Vec2* first, const Vec2* second,

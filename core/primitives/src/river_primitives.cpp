@@ -15,7 +15,8 @@ using geometry::Vec2;
 
 constexpr double kPi = std::numbers::pi;
 constexpr std::uint64_t kRiverStream = 0x7269766572ull;
-constexpr double kMinMeanderWavelength = 200.0; // m: keeps curves within the file budget
+constexpr std::uint64_t kWanderStream = 0x77616e646572ull; // rivers wandering under the tributaries
+constexpr double kMinMeanderWavelength = 200.0;            // m: keeps curves within the file budget
 /// Share of δ a river's curve keeps from Γ (keepClearOfShore): 150 m by default, where the
 /// coast's cap (World::CoastShape) allows a bed about 160 m up.
 constexpr double kShoreClearance = 0.5;
@@ -198,6 +199,17 @@ RiverPrimitive buildSection(const input::Params& params, const network::RiverNet
   points = resample(points,
                     std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(length / step))));
   perturb(points, meander);
+  if (params.tributaryLevels > 0) {
+    // Under the tributaries, every river wanders at two scales, irregularly: a straight
+    // channel of constant width over a kilometre was the first thing reviewers saw.
+    base::Rng wanderRng(params.seed, base::mixHash(kWanderStream, id.value));
+    Meander wander;
+    wander.wavelength = wanderRng.uniform(450.0, 900.0);
+    wander.amplitude = wander.wavelength * wanderRng.uniform(0.06, 0.14);
+    wander.phase = wanderRng.uniform(0.0, 2.0 * kPi);
+    wander.secondAmplitude = wander.wavelength * wanderRng.uniform(0.02, 0.06);
+    perturb(points, wander);
+  }
   keepClearOfShore(points, node.position, net.node(node.parent).position, land,
                    kShoreClearance * params.delta);
 

@@ -51,13 +51,13 @@ BlockIndex::~BlockIndex() = default;
 BlockIndex::BlockIndex(BlockIndex&&) noexcept = default;
 BlockIndex& BlockIndex::operator=(BlockIndex&&) noexcept = default;
 
-std::vector<std::uint32_t> BlockIndex::blocksMeeting(const geometry::Aabb& box) const {
-  std::vector<std::uint32_t> out;
+std::vector<base::BlockId> BlockIndex::blocksMeeting(const geometry::Aabb& box) const {
+  std::vector<base::BlockId> out;
   if (box.empty())
     return out;
   tree_->rtree.query(bgi::intersects(toBox(box)),
                      boost::iterators::make_function_output_iterator(
-                         [&](const Entry& e) { out.push_back(e.second); }));
+                         [&](const Entry& e) { out.push_back(base::BlockId(e.second)); }));
   if (out.size() <= kSortedBelow) {
     std::sort(out.begin(), out.end());
     return out;
@@ -65,12 +65,12 @@ std::vector<std::uint32_t> BlockIndex::blocksMeeting(const geometry::Aabb& box) 
   // Many blocks: marked and collected in one pass (sorting thousands of ids in the tree's
   // order costs a mispredicted branch per comparison).
   std::vector<char> found(influence_.size(), 0);
-  for (const std::uint32_t b : out)
-    found[b] = 1;
+  for (const base::BlockId b : out)
+    found[b.index()] = 1;
   out.resize(found.size());
   std::size_t n = 0;
   for (std::uint32_t b = 0; b < found.size(); ++b) { // without a branch per block
-    out[n] = b;
+    out[n] = base::BlockId(b);
     n += static_cast<std::size_t>(found[b]);
   }
   out.resize(n);

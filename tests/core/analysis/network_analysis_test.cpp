@@ -1,3 +1,4 @@
+#include "result_matchers.h"
 #include "test_worlds.h"
 
 #include "strahler/analysis/hydrology.h"
@@ -14,7 +15,8 @@ namespace {
 class HydrologyOf : public ::testing::TestWithParam<std::string> {
 protected:
   void SetUp() override {
-    spec_ = GetParam() == "mallorca" ? testing::mallorcaSpec() : testing::defaultIslandSpec();
+    spec_ =
+        GetParam() == "mallorca" ? test_support::mallorcaSpec() : test_support::defaultIslandSpec();
     auto h = buildHydrology(spec_);
     ASSERT_TRUE(h.ok()) << h.error().message;
     h_ = std::move(h).value();
@@ -88,9 +90,9 @@ TEST_P(HydrologyOf, RosgenTypesFollowTheirRules) {
 INSTANTIATE_TEST_SUITE_P(Worlds, HydrologyOf, ::testing::Values("default", "mallorca"));
 
 TEST(Hydrology, IsDeterministic) {
-  const input::WorldSpec spec = testing::defaultIslandSpec(11);
-  const Hydrology a = buildHydrology(spec).value();
-  const Hydrology b = buildHydrology(spec).value();
+  const input::WorldSpec spec = test_support::defaultIslandSpec(11);
+  STRAHLER_ASSIGN_OR_ASSERT(const Hydrology a, buildHydrology(spec));
+  STRAHLER_ASSIGN_OR_ASSERT(const Hydrology b, buildHydrology(spec));
   ASSERT_EQ(a.blocks.vertices.size(), b.blocks.vertices.size());
   for (std::size_t v = 0; v < a.blocks.vertices.size(); ++v) {
     ASSERT_EQ(std::memcmp(&a.blocks.vertices[v].position, &b.blocks.vertices[v].position,
@@ -104,9 +106,9 @@ TEST(Hydrology, IsDeterministic) {
 TEST(Hydrology, RiverSlopesFollowTheSlopeAreaLaw) {
   // With one river slope s everywhere, every edge falls by s · (A / referenceArea)^−θ per
   // metre, A its upstream node's drainage area: steep headwaters, gentle trunks.
-  input::WorldSpec spec = testing::defaultIslandSpec();
+  input::WorldSpec spec = test_support::defaultIslandSpec();
   spec.params.slopeMin = spec.params.slopeMax = 0.05;
-  const Hydrology h = buildHydrology(spec).value();
+  STRAHLER_ASSIGN_OR_ASSERT(const Hydrology h, buildHydrology(spec));
   double steepest = 0.0, gentlest = 1.0;
   for (std::size_t i = 0; i < h.network.nodes.size(); ++i) {
     const network::RiverNode& node = h.network.nodes[i];

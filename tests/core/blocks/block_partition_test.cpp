@@ -16,13 +16,13 @@ using geometry::Polygon;
 using geometry::PolygonIndex;
 using geometry::Ring;
 using geometry::Vec2;
-using testing::build;
-using testing::expectConsistentBlocks;
-using testing::expectNearestNodeOwnsPoints;
-using testing::naiveClippedArea;
-using testing::randomPointsIn;
-using testing::rectangle;
-using testing::totalArea;
+using test_support::build;
+using test_support::expectConsistentBlocks;
+using test_support::expectNearestNodeOwnsPoints;
+using test_support::naiveClippedArea;
+using test_support::randomPointsIn;
+using test_support::rectangle;
+using test_support::totalArea;
 
 constexpr double kPi = std::numbers::pi;
 

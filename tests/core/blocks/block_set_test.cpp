@@ -14,11 +14,11 @@ namespace {
 
 using geometry::PolygonIndex;
 using geometry::Vec2;
-using testing::build;
-using testing::expectConsistentBlocks;
-using testing::networkAt;
-using testing::rectangle;
-using testing::totalArea;
+using test_support::build;
+using test_support::expectConsistentBlocks;
+using test_support::networkAt;
+using test_support::rectangle;
+using test_support::totalArea;
 
 PolygonIndex squareLand(double side) {
   return PolygonIndex({geometry::Polygon{rectangle({0, 0}, {side, side}), {}}});

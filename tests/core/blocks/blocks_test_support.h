@@ -13,7 +13,7 @@
 #include <limits>
 #include <vector>
 
-namespace strahler::blocks::testing {
+namespace strahler::blocks::test_support {
 
 using geometry::Ring;
 using geometry::Vec2;
@@ -156,4 +156,4 @@ inline void expectNearestNodeOwnsPoints(const BlockSet& set, const std::vector<V
   EXPECT_GT(checked, samples * 9 / 10);
 }
 
-} // namespace strahler::blocks::testing
+} // namespace strahler::blocks::test_support

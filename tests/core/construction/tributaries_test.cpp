@@ -3,11 +3,13 @@
 #include "strahler/base/random.h"
 #include "strahler/construction/world.h"
 #include "strahler/construction/world_builder.h"
+#include "strahler/geometry/distance.h"
 #include "strahler/quality/drainage.h"
 #include "strahler/quality/world_raster.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <memory>
 #include <thread>
@@ -22,7 +24,7 @@ using geometry::Vec2;
 /// change evaluation, so both worlds share the same vector description).
 const WorldData& islandData() {
   static const WorldData data = [] {
-    input::WorldSpec spec = testing::defaultIslandSpec();
+    input::WorldSpec spec = test_support::defaultIslandSpec();
     auto generated = generateWorldData(spec, "test");
     EXPECT_TRUE(generated.ok()) << generated.error().message;
     return std::move(generated).value();
@@ -122,6 +124,40 @@ TEST(Tributaries, TheCarvedLandStillDrains) {
   EXPECT_GT(carved.landCells, 200000u);
   EXPECT_GE(carved.drainingFraction, plain.drainingFraction - 0.005)
       << carved.pits << " pits, largest " << carved.largestUndrainedAreaKm2 << " km²";
+}
+
+TEST(Tributaries, RiversWanderUnderThem) {
+  // With tributaries the graph's rivers wander at two scales, straight (B) ones too; without,
+  // a B river keeps close to its edge. Ends (the nodes) stay where they were.
+  input::WorldSpec spec = test_support::defaultIslandSpec();
+  spec.params.tributaryLevels = 3;
+  auto wandering = generateWorldData(spec, "test");
+  ASSERT_TRUE(wandering.ok()) << wandering.error().message;
+  const WorldData& plain = islandData();
+  ASSERT_EQ(wandering.value().rivers.size(), plain.rivers.size());
+  const auto offset = [](const primitives::RiverPrimitive& r) {
+    const Vec2 a = r.curve.front().position, b = r.curve.back().position;
+    double most = 0.0;
+    for (const primitives::CurvePoint& q : r.curve)
+      most = std::max(most, geometry::pointSegmentDistance(q.position, a, b));
+    return most;
+  };
+  double plainSum = 0.0, wanderingSum = 0.0;
+  std::size_t straight = 0;
+  for (std::size_t i = 0; i < plain.rivers.size(); ++i) {
+    const primitives::RiverPrimitive& before = plain.rivers[i];
+    const primitives::RiverPrimitive& after = wandering.value().rivers[i];
+    ASSERT_EQ(before.curve.front().position, after.curve.front().position);
+    ASSERT_EQ(before.curve.back().position, after.curve.back().position);
+    if (before.type != primitives::RiverType::kStraight || before.curve.size() < 10)
+      continue;
+    ++straight;
+    plainSum += offset(before);
+    wanderingSum += offset(after);
+  }
+  ASSERT_GT(straight, 50u);
+  EXPECT_GT(wanderingSum / straight, plainSum / straight + 20.0)
+      << plainSum / straight << " m against " << wanderingSum / straight << " m";
 }
 
 } // namespace

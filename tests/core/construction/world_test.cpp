@@ -1,3 +1,4 @@
+#include "result_matchers.h"
 #include "test_worlds.h"
 
 #include "strahler/base/random.h"
@@ -28,9 +29,9 @@ using geometry::Vec2;
 /// The default island, generated once for the whole suite.
 const World& defaultWorld() {
   static const std::unique_ptr<World> world = [] {
-    auto data = generateWorldData(testing::defaultIslandSpec(), "test");
+    auto data = generateWorldData(test_support::defaultIslandSpec(), "test");
     EXPECT_TRUE(data.ok()) << data.error().message;
-    return std::make_unique<World>(std::move(data).value());
+    return std::make_unique<World>(test_support::valueOf(std::move(data)));
   }();
   return *world;
 }
@@ -201,7 +202,7 @@ TEST(World, PairedRunsEqualSingleHeights) {
     terrain[i] = i;
   std::vector<World::RiverCandidate> rivers;
   for (std::uint32_t i = 0; i < world.data().rivers.size(); ++i)
-    rivers.push_back(world.wholeRiver(i));
+    rivers.push_back(world.wholeRiver(base::PrimitiveId(i)));
   constexpr std::size_t kRun = simd::kLanes;
   for (int pair = 0; pair < 40; ++pair) {
     std::vector<Vec2> first, second;
@@ -396,8 +397,10 @@ TEST(World, RiversNarrowerThanTheSamplesFade) {
 }
 
 TEST(World, GenerationIsDeterministic) {
-  const auto a = generateWorldData(testing::defaultIslandSpec(3), "k").value();
-  const auto b = generateWorldData(testing::defaultIslandSpec(3), "k").value();
+  STRAHLER_ASSIGN_OR_ASSERT(const auto a,
+                            generateWorldData(test_support::defaultIslandSpec(3), "k"));
+  STRAHLER_ASSIGN_OR_ASSERT(const auto b,
+                            generateWorldData(test_support::defaultIslandSpec(3), "k"));
   EXPECT_EQ(a.terrain, b.terrain);
   EXPECT_EQ(a.rivers, b.rivers);
   EXPECT_EQ(a.blocks, b.blocks);

@@ -1,4 +1,5 @@
 #include "png_encoder.h"
+#include "result_matchers.h"
 
 #include "strahler/encoding/heightmap_encoder.h"
 #include "strahler/image/image.h"
@@ -263,9 +264,9 @@ TEST(PngSettings, EverySettingDecodesToTheSameSamples) {
     for (int strategy = 0; strategy <= 3; ++strategy) {
       const detail::PngOptions options{1 + filter % 3, static_cast<detail::PngFilter>(filter),
                                        static_cast<detail::ZlibStrategy>(strategy)};
-      const auto png = detail::encodePng(samples, 40, 30, detail::PngLayout::kRgb8, options);
-      ASSERT_TRUE(png.ok()) << png.error().message;
-      EXPECT_EQ(decodePng(png.value()).samples, samples) << filter << " " << strategy;
+      STRAHLER_ASSIGN_OR_ASSERT(
+          const auto png, detail::encodePng(samples, 40, 30, detail::PngLayout::kRgb8, options));
+      EXPECT_EQ(decodePng(png).samples, samples) << filter << " " << strategy;
     }
 }
 
@@ -353,9 +354,35 @@ TEST(HeightmapEncoder, RejectsBadDimensions) {
 }
 
 TEST(HeightmapEncoder, AcceptsTheLargestSide) {
-  const HeightGrid grid{4096, 2, std::vector<float>(8192, 12.5f)};
-  for (const HeightmapFormat format : kAllFormats)
-    EXPECT_TRUE(encodeHeightmap(grid, format).ok());
+  // 4096 × 2 heights in steps of 0.5 m (exact in every format): every pixel decodes to its own.
+  HeightGrid grid{4096, 2, {}};
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4096; ++x)
+      grid.heights.push_back(static_cast<float>(0.5 * (x % 1000) + 600.0 * y - 100.0));
+  const auto expectHeights = [&](const std::vector<double>& decoded, HeightmapFormat format) {
+    ASSERT_EQ(decoded.size(), grid.heights.size()) << static_cast<int>(format);
+    for (std::size_t i = 0; i < decoded.size(); ++i)
+      ASSERT_NEAR(decoded[i], grid.heights[i], 1e-6) << static_cast<int>(format) << " pixel " << i;
+  };
+  for (const HeightmapFormat format :
+       {HeightmapFormat::kTerrainRgb, HeightmapFormat::kTerrarium, HeightmapFormat::kPng16}) {
+    const DecodedPng png = decodePng(encode(grid, format));
+    EXPECT_EQ(png.header.width, 4096u);
+    EXPECT_EQ(png.header.height, 2u);
+    expectHeights(format == HeightmapFormat::kTerrainRgb  ? decodeTerrainRgb(png)
+                  : format == HeightmapFormat::kTerrarium ? decodeTerrarium(png)
+                                                          : decodePng16(png),
+                  format);
+  }
+  for (const auto& [format, container] :
+       {std::pair{HeightmapFormat::kTiff, image::FloatImageFormat::kTiff},
+        std::pair{HeightmapFormat::kExr, image::FloatImageFormat::kExr}}) {
+    STRAHLER_ASSIGN_OR_ASSERT(const auto decoded,
+                              image::decodeFloatImage(encode(grid, format), container));
+    EXPECT_EQ(decoded.width, 4096);
+    EXPECT_EQ(decoded.height, 2);
+    expectHeights({decoded.pixels.begin(), decoded.pixels.end()}, format);
+  }
 }
 
 TEST(HeightmapEncoder, RejectsAnUnknownFormat) {
@@ -448,9 +475,9 @@ TEST(HeightmapGolden, FloatFilesHoldTheGridBitForBit) {
   const std::pair<const GoldenCase&, image::FloatImageFormat> cases[] = {
       {kGolden[3], image::FloatImageFormat::kTiff}, {kGolden[4], image::FloatImageFormat::kExr}};
   for (const auto& [golden, container] : cases) {
-    const auto decoded = image::decodeFloatImage(readFile(goldenPath(golden)), container);
-    ASSERT_TRUE(decoded.ok()) << goldenPath(golden) << ": " << decoded.error().message;
-    EXPECT_EQ(decoded.value().pixels, grid.heights) << goldenPath(golden);
+    STRAHLER_ASSIGN_OR_ASSERT(const auto decoded,
+                              image::decodeFloatImage(readFile(goldenPath(golden)), container));
+    EXPECT_EQ(decoded.pixels, grid.heights) << goldenPath(golden);
   }
 }
 

@@ -1,3 +1,4 @@
+#include "result_matchers.h"
 #include "synthetic_terrain.h"
 
 #include "strahler/encoding/mesh.h"
@@ -72,9 +73,8 @@ Decoded decodeDrc(const std::string& bytes) {
 }
 
 Mesh tile(int quads, bool uv, geometry::Vec2 origin = {2000.0, -1000.0}) {
-  auto mesh = buildGridMesh(testing::syntheticTile(quads, 30.0, origin, 60.0, uv));
-  EXPECT_TRUE(mesh.ok());
-  return std::move(mesh).value();
+  auto mesh = buildGridMesh(test_support::syntheticTile(quads, 30.0, origin, 60.0, uv));
+  return strahler::test_support::valueOf(std::move(mesh));
 }
 
 std::string drc(const Mesh& mesh, const DracoOptions& options = {}) {

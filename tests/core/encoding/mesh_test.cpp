@@ -1,3 +1,4 @@
+#include "result_matchers.h"
 #include "synthetic_terrain.h"
 
 #include "strahler/encoding/mesh.h"
@@ -65,7 +66,7 @@ std::size_t vertexCount(const Mesh& mesh) {
 }
 
 TEST(GridMesh, HasGridVerticesAndTrianglesWithoutSkirt) {
-  const Mesh mesh = build(testing::syntheticTile(8, 10.0, {}, 0.0, true));
+  const Mesh mesh = build(test_support::syntheticTile(8, 10.0, {}, 0.0, true));
   EXPECT_EQ(vertexCount(mesh), 81u);
   EXPECT_EQ(mesh.normals.size(), 3u * 81u);
   EXPECT_EQ(mesh.uvs.size(), 2u * 81u);
@@ -73,7 +74,7 @@ TEST(GridMesh, HasGridVerticesAndTrianglesWithoutSkirt) {
 }
 
 TEST(GridMesh, SkirtAddsOneVertexPerEdgeVertexAndTwoTrianglesPerEdge) {
-  const Mesh mesh = build(testing::syntheticTile(8, 10.0, {}, 25.0, true));
+  const Mesh mesh = build(test_support::syntheticTile(8, 10.0, {}, 25.0, true));
   EXPECT_EQ(vertexCount(mesh), 81u + 32u);
   EXPECT_EQ(mesh.indices.size(), 3u * (2u * 64u + 8u * 8u));
   for (std::uint32_t index : mesh.indices)
@@ -82,7 +83,7 @@ TEST(GridMesh, SkirtAddsOneVertexPerEdgeVertexAndTwoTrianglesPerEdge) {
 
 TEST(GridMesh, VertexOrderIsRowMajorFromTheSouthWest) {
   const geometry::Vec2 origin{1000.0, 2000.0};
-  const MeshGridInput input = testing::syntheticTile(4, 12.5, origin, 0.0, false);
+  const MeshGridInput input = test_support::syntheticTile(4, 12.5, origin, 0.0, false);
   const Mesh mesh = build(input);
   for (int j = 0; j <= 4; ++j) {
     for (int i = 0; i <= 4; ++i) {
@@ -96,7 +97,7 @@ TEST(GridMesh, VertexOrderIsRowMajorFromTheSouthWest) {
 }
 
 TEST(GridMesh, GridTrianglesAreCounterClockwiseSeenFromAbove) {
-  const Mesh mesh = build(testing::syntheticTile(16, 5.0, {300.0, -700.0}, 0.0, false));
+  const Mesh mesh = build(test_support::syntheticTile(16, 5.0, {300.0, -700.0}, 0.0, false));
   for (std::size_t f = 0; f < mesh.indices.size() / 3; ++f)
     ASSERT_GT(faceNormal(mesh, f)[1], 0.0) << "face " << f;
 }
@@ -104,7 +105,7 @@ TEST(GridMesh, GridTrianglesAreCounterClockwiseSeenFromAbove) {
 TEST(GridMesh, SkirtHangsBelowEdgeVerticesAndFacesOutward) {
   const int n = 6;
   const double spacing = 10.0, depth = 40.0;
-  const Mesh mesh = build(testing::syntheticTile(n, spacing, {}, depth, true));
+  const Mesh mesh = build(test_support::syntheticTile(n, spacing, {}, depth, true));
   const std::size_t grid = (n + 1) * (n + 1);
   for (std::size_t f = 2 * n * n; f < mesh.indices.size() / 3; ++f) {
     const Vec3 normalOfFace = faceNormal(mesh, f);
@@ -145,7 +146,7 @@ TEST(GridMesh, NormalsOfATiltedPlaneAreExact) {
 }
 
 TEST(GridMesh, NormalsAreUnitAndPointUp) {
-  const Mesh mesh = build(testing::syntheticTile(32, 30.0, {5000.0, 1000.0}, 50.0, false));
+  const Mesh mesh = build(test_support::syntheticTile(32, 30.0, {5000.0, 1000.0}, 50.0, false));
   for (std::size_t v = 0; v < vertexCount(mesh); ++v) {
     const Vec3 n = normal(mesh, v);
     EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0, 1e-6);
@@ -155,7 +156,7 @@ TEST(GridMesh, NormalsAreUnitAndPointUp) {
 
 TEST(GridMesh, TextureCoordinatesSpanTheUnitSquareWithVSouth) {
   const int n = 8;
-  const Mesh mesh = build(testing::syntheticTile(n, 10.0, {}, 5.0, true));
+  const Mesh mesh = build(test_support::syntheticTile(n, 10.0, {}, 5.0, true));
   for (float value : mesh.uvs) {
     EXPECT_GE(value, 0.0f);
     EXPECT_LE(value, 1.0f);
@@ -170,7 +171,7 @@ TEST(GridMesh, TextureCoordinatesSpanTheUnitSquareWithVSouth) {
 }
 
 TEST(GridMesh, NoTextureCoordinatesWhenNotRequested) {
-  const Mesh mesh = build(testing::syntheticTile(4, 10.0, {}, 5.0, false));
+  const Mesh mesh = build(test_support::syntheticTile(4, 10.0, {}, 5.0, false));
   EXPECT_TRUE(mesh.uvs.empty());
 }
 
@@ -204,7 +205,7 @@ TEST(GridMesh, NeighbouringTilesShareEdgeVerticesAndNormalsBitForBit) {
   for (int j = -1; j <= 2 * n + 1; ++j)
     for (int i = -1; i <= 2 * n + 1; ++i)
       field.push_back(
-          testing::syntheticHeight(origin.x + i * spacing + 0.37, origin.y + j * spacing));
+          test_support::syntheticHeight(origin.x + i * spacing + 0.37, origin.y + j * spacing));
   const Mesh west = build(cut(field, n, spacing, origin, 0, 0));
   const Mesh east = build(cut(field, n, spacing, origin, 1, 0));
   const Mesh north = build(cut(field, n, spacing, origin, 0, 1));
@@ -218,8 +219,8 @@ TEST(GridMesh, NeighbouringTilesShareEdgeVerticesAndNormalsBitForBit) {
 }
 
 TEST(GridMesh, RejectsInvalidInput) {
-  const MeshGridInput good = testing::syntheticTile(4, 10.0, {}, 5.0, true);
-  ASSERT_TRUE(buildGridMesh(good).ok());
+  const MeshGridInput good = test_support::syntheticTile(4, 10.0, {}, 5.0, true);
+  STRAHLER_ASSERT_OK(buildGridMesh(good));
   std::vector<MeshGridInput> bad(9, good);
   bad[0].quads = 0;
   bad[1].quads = kMaxMeshQuads + 1;

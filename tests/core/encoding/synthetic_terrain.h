@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace strahler::encoding::testing {
+namespace strahler::encoding::test_support {
 
 /// A terrain-like height field in metres over local metres: broad hills, ridges, a valley
 /// and fine detail, so Draco sees realistic, non-planar data.
@@ -33,4 +33,4 @@ inline MeshGridInput syntheticTile(int quads, double spacing, geometry::Vec2 ori
   return input;
 }
 
-} // namespace strahler::encoding::testing
+} // namespace strahler::encoding::test_support

@@ -62,7 +62,7 @@ bool writeBytes(const std::filesystem::path& path, const std::string& bytes) {
 }
 
 bool writeSample(const std::filesystem::path& folder, const Sample& sample) {
-  const auto input = strahler::encoding::testing::syntheticTile(
+  const auto input = strahler::encoding::test_support::syntheticTile(
       sample.quads, sample.spacing, sample.origin, 4.0 * sample.spacing, sample.textureCoordinates);
   const auto mesh = buildGridMesh(input);
   if (!mesh.ok()) {

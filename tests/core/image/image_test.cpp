@@ -1,3 +1,5 @@
+#include "result_matchers.h"
+
 #include "strahler/image/image.h"
 
 #include <gtest/gtest.h>
@@ -95,10 +97,9 @@ RgbImage gradient(int width, int height) {
 
 TEST(Image, PngRoundTripReturnsTheFirstChannelNormalised) {
   const std::string path = (tempDir() / "gradient.png").string();
-  ASSERT_TRUE(writePng(path, gradient(3, 2)).ok());
-  auto read = readGrayImage(path);
-  ASSERT_TRUE(read.ok()) << read.error().message;
-  const GrayImage& image = read.value();
+  STRAHLER_ASSERT_OK(writePng(path, gradient(3, 2)));
+  STRAHLER_ASSIGN_OR_ASSERT(auto read, readGrayImage(path));
+  const GrayImage& image = read;
   ASSERT_EQ(image.width, 3);
   ASSERT_EQ(image.height, 2);
   ASSERT_EQ(image.pixels.size(), 6u);
@@ -111,22 +112,20 @@ TEST(Image, PngRoundTripReturnsTheFirstChannelNormalised) {
 TEST(Image, SixteenBitImagesAreNormalisedToUnitRange) {
   const fs::path path = tempDir() / "depth.tif";
   writeBytes(path, tiff16(3, 1, {0, 65535, 32768}));
-  auto read = readGrayImage(path.string());
-  ASSERT_TRUE(read.ok()) << read.error().message;
-  EXPECT_FLOAT_EQ(read.value().at(0, 0), 0.0f);
-  EXPECT_FLOAT_EQ(read.value().at(1, 0), 1.0f);
-  EXPECT_NEAR(read.value().at(2, 0), 32768.0 / 65535.0, 1e-6);
+  STRAHLER_ASSIGN_OR_ASSERT(auto read, readGrayImage(path.string()));
+  EXPECT_FLOAT_EQ(read.at(0, 0), 0.0f);
+  EXPECT_FLOAT_EQ(read.at(1, 0), 1.0f);
+  EXPECT_NEAR(read.at(2, 0), 32768.0 / 65535.0, 1e-6);
 }
 
 TEST(Image, FloatImagesKeepTheirValuesAndRowOrder) {
   const fs::path path = tempDir() / "values.pfm";
   writeBytes(path, pfm(2, 2, {0.25f, 2.5f, -1.0f, 0.75f}));
-  auto read = readGrayImage(path.string());
-  ASSERT_TRUE(read.ok()) << read.error().message;
-  EXPECT_FLOAT_EQ(read.value().at(0, 0), 0.25f);
-  EXPECT_FLOAT_EQ(read.value().at(1, 0), 2.5f);
-  EXPECT_FLOAT_EQ(read.value().at(0, 1), -1.0f);
-  EXPECT_FLOAT_EQ(read.value().at(1, 1), 0.75f);
+  STRAHLER_ASSIGN_OR_ASSERT(auto read, readGrayImage(path.string()));
+  EXPECT_FLOAT_EQ(read.at(0, 0), 0.25f);
+  EXPECT_FLOAT_EQ(read.at(1, 0), 2.5f);
+  EXPECT_FLOAT_EQ(read.at(0, 1), -1.0f);
+  EXPECT_FLOAT_EQ(read.at(1, 1), 0.75f);
 }
 
 TEST(Image, NonFinitePixelsAreRefusedWithTheirPosition) {
@@ -178,7 +177,7 @@ TEST(Image, DirectoryIsAnIoError) {
 
 TEST(Image, PixelLimitIsEnforced) {
   const std::string path = (tempDir() / "six.png").string();
-  ASSERT_TRUE(writePng(path, gradient(3, 2)).ok());
+  STRAHLER_ASSERT_OK(writePng(path, gradient(3, 2)));
   EXPECT_TRUE(readGrayImage(path, 6).ok());
   auto read = readGrayImage(path, 5);
   ASSERT_FALSE(read.ok());

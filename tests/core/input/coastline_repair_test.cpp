@@ -14,9 +14,9 @@ namespace strahler::input {
 namespace {
 
 using base::ErrorCode;
-using testing::failsWith;
-using testing::polygonJson;
-using testing::square;
+using test_support::failsWith;
+using test_support::polygonJson;
+using test_support::square;
 
 std::string report(const repair::RepairedCoast& coast) {
   std::string text;
@@ -61,7 +61,8 @@ TEST(CoastlineRepair, ValidCoastlineIsTheSameWithOrWithoutRepair) {
       polygonJson({square(0, 0, 1), {{0.2, 0.2}, {0.2, 0.4}, {0.4, 0.4}, {0.4, 0.2}, {0.2, 0.2}}});
   const auto plain = parseCoastline(json);
   const auto repaired = parseAndRepairCoastline(json);
-  ASSERT_TRUE(plain.ok() && repaired.ok());
+  STRAHLER_ASSERT_OK(plain);
+  STRAHLER_ASSERT_OK(repaired);
   EXPECT_TRUE(repaired.value().changes.empty()) << report(repaired.value());
   ASSERT_EQ(repaired.value().land.size(), 1u);
   EXPECT_EQ(repaired.value().land[0].outer, plain.value()[0].outer);
@@ -69,7 +70,7 @@ TEST(CoastlineRepair, ValidCoastlineIsTheSameWithOrWithoutRepair) {
 }
 
 TEST(CoastlineRepair, IcelandIsRefusedNamingTheCrossingAndRepair) {
-  const auto land = parseCoastline(testing::readTestData("iceland.geojson"));
+  const auto land = parseCoastline(test_support::readTestData("iceland.geojson"));
   EXPECT_TRUE(failsWith(land, ErrorCode::kInvalidInput,
                         "feature 0, polygon 0, ring 0: ring intersects itself: segment 511 "
                         "(positions 511-512) touches or crosses segment 513 (positions 513-514) "
@@ -77,9 +78,9 @@ TEST(CoastlineRepair, IcelandIsRefusedNamingTheCrossingAndRepair) {
 }
 
 TEST(CoastlineRepair, IcelandIsRepairedWithAReportOfEachChange) {
-  const auto repaired = parseAndRepairCoastline(testing::readTestData("iceland.geojson"));
-  ASSERT_TRUE(repaired.ok()) << repaired.error().message;
-  const repair::RepairedCoast& coast = repaired.value();
+  STRAHLER_ASSIGN_OR_ASSERT(const auto repaired,
+                            parseAndRepairCoastline(test_support::readTestData("iceland.geojson")));
+  const repair::RepairedCoast& coast = repaired;
   const std::string text = report(coast);
   // Natural Earth's ring runs clockwise and crosses itself once, on the south-east coast at
   // 16.48 W, 63.90 N, cutting off a loop of about 0.04 km² that touches the rest at the
@@ -110,16 +111,15 @@ TEST(CoastlineRepair, WorldSpecOfIcelandKeysTheRepairedGeometry) {
                         "iceland.geojson: coastline: feature 0, polygon 0, ring 0: ring "
                         "intersects itself"));
   sources.repair = true;
-  const auto spec = loadWorldSpec(sources);
-  ASSERT_TRUE(spec.ok()) << spec.error().message;
-  EXPECT_EQ(spec.value().repairs.size(), 3u);
+  STRAHLER_ASSIGN_OR_ASSERT(const auto spec, loadWorldSpec(sources));
+  EXPECT_EQ(spec.repairs.size(), 3u);
   // Iceland: 101,689 km² with its islets (Natural Earth); the main island alone is a little
   // less. The land the world is built from, and keyed by, is the repaired one.
-  EXPECT_NEAR(spec.value().areaKm2(), 101'000.0, 1'500.0);
-  const auto direct = parseAndRepairCoastline(testing::readTestData("iceland.geojson"));
-  ASSERT_TRUE(direct.ok());
-  ASSERT_EQ(spec.value().landLonLat.size(), 1u);
-  EXPECT_EQ(spec.value().landLonLat[0].outer, direct.value().land[0].outer);
+  EXPECT_NEAR(spec.areaKm2(), 101'000.0, 1'500.0);
+  STRAHLER_ASSIGN_OR_ASSERT(const auto direct,
+                            parseAndRepairCoastline(test_support::readTestData("iceland.geojson")));
+  ASSERT_EQ(spec.landLonLat.size(), 1u);
+  EXPECT_EQ(spec.landLonLat[0].outer, direct.land[0].outer);
 }
 
 TEST(CoastlineRepair, RandomSelfCrossingRingsGiveValidLandOrAPreciseError) {
@@ -133,9 +133,9 @@ TEST(CoastlineRepair, RandomSelfCrossingRingsGiveValidLandOrAPreciseError) {
   };
   int repaired = 0;
   for (int iteration = 0; iteration < 300; ++iteration) {
-    std::vector<testing::RingPositions> rings;
+    std::vector<test_support::RingPositions> rings;
     for (int r = 0; r < 1 + iteration % 2; ++r) {
-      testing::RingPositions ring;
+      test_support::RingPositions ring;
       const int n = 3 + next(12);
       for (int i = 0; i < n; ++i)
         ring.push_back({10.0 + 0.01 * next(7), 40.0 + 0.01 * next(7)});
@@ -148,6 +148,8 @@ TEST(CoastlineRepair, RandomSelfCrossingRingsGiveValidLandOrAPreciseError) {
     ASSERT_EQ(first.ok(), second.ok());
     if (!first.ok()) {
       EXPECT_EQ(first.error().code, ErrorCode::kInvalidInput) << first.error().message;
+      EXPECT_EQ(first.error().message.find("the repair left a defect"), std::string::npos)
+          << "the repair's output failed the reader's checks: " << first.error().message;
       EXPECT_EQ(first.error().message, second.error().message);
       continue;
     }

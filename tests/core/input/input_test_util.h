@@ -15,9 +15,9 @@
 #include <string_view>
 #include <vector>
 
-namespace strahler::input::testing {
+namespace strahler::input::test_support {
 
-using strahler::testing::failsWith; // tests/support/result_matchers.h
+using strahler::test_support::failsWith; // tests/support/result_matchers.h
 
 using Position = std::array<double, 2>;
 using RingPositions = std::vector<Position>;
@@ -93,4 +93,4 @@ inline std::string readTestData(const std::string& name) {
   return text.str();
 }
 
-} // namespace strahler::input::testing
+} // namespace strahler::input::test_support

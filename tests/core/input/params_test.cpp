@@ -12,13 +12,12 @@ namespace strahler::input {
 namespace {
 
 using base::ErrorCode;
-using testing::failsWith;
+using test_support::failsWith;
 
 TEST(Params, EmptyObjectGivesTheDefaults) {
   EXPECT_TRUE(validateParams(Params{}).ok());
-  auto parsed = parseParams("{}");
-  ASSERT_TRUE(parsed.ok()) << parsed.error().message;
-  EXPECT_EQ(parsed.value(), Params{});
+  STRAHLER_ASSIGN_OR_ASSERT(auto parsed, parseParams("{}"));
+  EXPECT_EQ(parsed, Params{});
 }
 
 TEST(Params, ReadsEveryKindOfField) {
@@ -140,10 +139,9 @@ TEST(Params, ValidateRejectsNonFiniteValues) {
 }
 
 TEST(Params, SeedAsString) {
-  auto big = parseParams(R"({"seed": "18446744073709551615"})");
-  ASSERT_TRUE(big.ok()) << big.error().message;
-  EXPECT_EQ(big.value().seed, std::numeric_limits<std::uint64_t>::max());
-  EXPECT_EQ(parseParams(R"({"seed": "007"})").value().seed, 7u);
+  STRAHLER_ASSIGN_OR_ASSERT(auto big, parseParams(R"({"seed": "18446744073709551615"})"));
+  EXPECT_EQ(big.seed, std::numeric_limits<std::uint64_t>::max());
+  EXPECT_EQ(strahler::test_support::valueOf(parseParams(R"({"seed": "007"})")).seed, 7u);
   EXPECT_TRUE(failsWith(parseParams(R"({"seed": "18446744073709551616"})"), ErrorCode::kOutOfRange,
                         "larger than 2^64-1"));
   EXPECT_TRUE(failsWith(parseParams(R"({"seed": "12a"})"), ErrorCode::kInvalidInput,
@@ -153,9 +151,9 @@ TEST(Params, SeedAsString) {
 }
 
 TEST(Params, SeedAsNumber) {
-  EXPECT_EQ(parseParams(R"({"seed": 18446744073709551615})").value().seed,
+  EXPECT_EQ(strahler::test_support::valueOf(parseParams(R"({"seed": 18446744073709551615})")).seed,
             std::numeric_limits<std::uint64_t>::max());
-  EXPECT_EQ(parseParams(R"({"seed": 1e3})").value().seed, 1000u);
+  EXPECT_EQ(strahler::test_support::valueOf(parseParams(R"({"seed": 1e3})")).seed, 1000u);
   EXPECT_TRUE(failsWith(parseParams(R"({"seed": -1})"), ErrorCode::kOutOfRange,
                         "'seed' must be a non-negative integer, got -1"));
   EXPECT_TRUE(failsWith(parseParams(R"({"seed": 1e19})"), ErrorCode::kInvalidInput,
@@ -169,7 +167,8 @@ TEST(Params, SeedAsNumber) {
 TEST(Params, FillBranchesMustBeAnInteger) {
   EXPECT_TRUE(failsWith(parseParams(R"({"fillBranches": 2.5})"), ErrorCode::kInvalidInput,
                         "params: 'fillBranches' must be an integer, got 2.5"));
-  EXPECT_EQ(parseParams(R"({"fillBranches": 1.0})").value().fillBranches, 1);
+  EXPECT_EQ(strahler::test_support::valueOf(parseParams(R"({"fillBranches": 1.0})")).fillBranches,
+            1);
   EXPECT_TRUE(
       failsWith(parseParams(R"({"maxPriority": 1e12})"), ErrorCode::kOutOfRange, "'maxPriority'"));
 }
@@ -239,10 +238,9 @@ TEST(Params, CanonicalJsonRoundTripsExactly) {
   p.constraints.push_back({ConstraintKind::kMountainousness, "m.tif", GeoBounds{1, 2, 3, 4}});
   ASSERT_TRUE(validateParams(p).ok()) << validateParams(p).error().message;
   const std::string text = canonicalJson(p);
-  auto parsed = parseParams(text);
-  ASSERT_TRUE(parsed.ok()) << parsed.error().message << "\n" << text;
-  EXPECT_EQ(parsed.value(), p) << text;
-  EXPECT_EQ(canonicalJson(parsed.value()), text);
+  STRAHLER_ASSIGN_OR_ASSERT(auto parsed, parseParams(text));
+  EXPECT_EQ(parsed, p) << text;
+  EXPECT_EQ(canonicalJson(parsed), text);
 }
 
 TEST(Params, CanonicalJsonHasAFixedKeyOrder) {
@@ -250,7 +248,7 @@ TEST(Params, CanonicalJsonHasAFixedKeyOrder) {
   EXPECT_EQ(text.rfind(R"({"edgeLength":1000,"sigma":)", 0), 0u) << text;
   EXPECT_NE(text.find(R"("deltaMinFlow":6,"seed":1,"constraints":[]})"), std::string::npos) << text;
   EXPECT_EQ(text.find(' '), std::string::npos);
-  EXPECT_EQ(parseParams(text).value(), Params{});
+  EXPECT_EQ(strahler::test_support::valueOf(parseParams(text)), Params{});
 }
 
 TEST(Params, TributaryLevelsAreInTheCanonicalJsonOnlyWhenSet) {

@@ -14,8 +14,8 @@ namespace strahler::input {
 namespace {
 
 using base::ErrorCode;
-using testing::failsWith;
-using testing::writeFile;
+using test_support::failsWith;
+using test_support::writeFile;
 
 std::string dataPath(const std::string& name) {
   return std::string(STRAHLER_TEST_DATA_DIR) + "/" + name;
@@ -37,9 +37,8 @@ std::vector<geometry::Vec2> allVertices(const geometry::MultiPolygon& land) {
 }
 
 TEST(WorldSpec, DefaultIslandIsAboutAThousandSquareKilometresWithOneLake) {
-  auto spec = loadWorldSpec({});
-  ASSERT_TRUE(spec.ok()) << spec.error().message;
-  const WorldSpec& w = spec.value();
+  STRAHLER_ASSIGN_OR_ASSERT(auto spec, loadWorldSpec({}));
+  const WorldSpec& w = spec;
   EXPECT_EQ(w.name, "default");
   EXPECT_NEAR(w.areaKm2(), 1000.0, 100.0);
   ASSERT_EQ(w.land.size(), 1u);
@@ -51,27 +50,24 @@ TEST(WorldSpec, DefaultIslandIsAboutAThousandSquareKilometresWithOneLake) {
 }
 
 TEST(WorldSpec, ProjectionIsCentredOnTheLandCentroid) {
-  auto spec = loadWorldSpec({});
-  ASSERT_TRUE(spec.ok()) << spec.error().message;
-  const geometry::Vec2 c = geometry::centroid(spec.value().land);
+  STRAHLER_ASSIGN_OR_ASSERT(auto spec, loadWorldSpec({}));
+  const geometry::Vec2 c = geometry::centroid(spec.land);
   EXPECT_LT(geometry::length(c), 10.0) << c.x << ", " << c.y; // metres from the origin
 }
 
 TEST(WorldSpec, MallorcaAreaMatchesItsKnownArea) {
   WorldSources sources;
   sources.coastPath = dataPath("mallorca.geojson");
-  auto spec = loadWorldSpec(sources);
-  ASSERT_TRUE(spec.ok()) << spec.error().message;
-  EXPECT_EQ(spec.value().name, "mallorca");
-  EXPECT_NEAR(spec.value().areaKm2(), 3640.0, 0.05 * 3640.0);
+  STRAHLER_ASSIGN_OR_ASSERT(auto spec, loadWorldSpec(sources));
+  EXPECT_EQ(spec.name, "mallorca");
+  EXPECT_NEAR(spec.areaKm2(), 3640.0, 0.05 * 3640.0);
 }
 
 TEST(WorldSpec, ProjectionRoundTripIsWithinAMicrodegree) {
   WorldSources sources;
   sources.coastPath = dataPath("corsica.geojson");
-  auto spec = loadWorldSpec(sources);
-  ASSERT_TRUE(spec.ok()) << spec.error().message;
-  const WorldSpec& w = spec.value();
+  STRAHLER_ASSIGN_OR_ASSERT(auto spec, loadWorldSpec(sources));
+  const WorldSpec& w = spec;
   for (const geometry::Vec2& lonLat : allVertices(w.landLonLat)) {
     const geometry::Vec2 back = w.projection.inverse(w.projection.forward(lonLat));
     ASSERT_NEAR(back.x, lonLat.x, 1e-6);
@@ -84,7 +80,8 @@ TEST(WorldSpec, SameInputsGiveTheSameSpecBitForBit) {
   sources.coastPath = dataPath("corsica.geojson");
   auto a = loadWorldSpec(sources);
   auto b = loadWorldSpec(sources);
-  ASSERT_TRUE(a.ok() && b.ok());
+  STRAHLER_ASSERT_OK(a);
+  STRAHLER_ASSERT_OK(b);
   const auto va = allVertices(a.value().land);
   const auto vb = allVertices(b.value().land);
   ASSERT_EQ(va.size(), vb.size());
@@ -120,20 +117,20 @@ TEST(WorldSpec, MakeWorldSpecValidatesParams) {
 
 TEST(WorldSpec, MissingCoastlineFile) {
   WorldSources sources;
-  sources.coastPath = (testing::tempDir() / "absent.geojson").string();
+  sources.coastPath = (test_support::tempDir() / "absent.geojson").string();
   EXPECT_TRUE(failsWith(loadWorldSpec(sources), ErrorCode::kNotFound,
                         "coastline file '" + sources.coastPath + "': file not found"));
 }
 
 TEST(WorldSpec, MissingParamsFile) {
   WorldSources sources;
-  sources.paramsPath = (testing::tempDir() / "absent.json").string();
+  sources.paramsPath = (test_support::tempDir() / "absent.json").string();
   EXPECT_TRUE(failsWith(loadWorldSpec(sources), ErrorCode::kNotFound, sources.paramsPath));
 }
 
 TEST(WorldSpec, MissingMouthsFile) {
   WorldSources sources;
-  sources.mouthsPath = (testing::tempDir() / "absent.geojson").string();
+  sources.mouthsPath = (test_support::tempDir() / "absent.geojson").string();
   EXPECT_TRUE(failsWith(loadWorldSpec(sources), ErrorCode::kNotFound, sources.mouthsPath));
 }
 
@@ -147,7 +144,7 @@ TEST(WorldSpec, FileTooLarge) {
 }
 
 TEST(WorldSpec, ErrorsInsideAFileNameTheFile) {
-  const auto dir = testing::tempDir();
+  const auto dir = test_support::tempDir();
   WorldSources sources;
   sources.paramsPath = writeFile(dir / "params.json", R"({"sigmaa": 900})");
   EXPECT_TRUE(failsWith(loadWorldSpec(sources), ErrorCode::kInvalidInput,
@@ -159,12 +156,12 @@ TEST(WorldSpec, ErrorsInsideAFileNameTheFile) {
 }
 
 TEST(WorldSpec, SeedOverrideWins) {
-  const auto dir = testing::tempDir();
+  const auto dir = test_support::tempDir();
   WorldSources sources;
   sources.paramsPath = writeFile(dir / "params.json", R"({"seed": 5})");
-  EXPECT_EQ(loadWorldSpec(sources).value().params.seed, 5u);
+  EXPECT_EQ(strahler::test_support::valueOf(loadWorldSpec(sources)).params.seed, 5u);
   sources.seed = 99;
-  EXPECT_EQ(loadWorldSpec(sources).value().params.seed, 99u);
+  EXPECT_EQ(strahler::test_support::valueOf(loadWorldSpec(sources)).params.seed, 99u);
 }
 
 constexpr const char* kMouths = R"({"type": "FeatureCollection", "features": [
@@ -175,10 +172,9 @@ constexpr const char* kMouths = R"({"type": "FeatureCollection", "features": [
 
 TEST(WorldSpec, MouthsAreReadWithPrioritiesAndProjected) {
   WorldSources sources;
-  sources.mouthsPath = writeFile(testing::tempDir() / "mouths.geojson", kMouths);
-  auto spec = loadWorldSpec(sources);
-  ASSERT_TRUE(spec.ok()) << spec.error().message;
-  const WorldSpec& w = spec.value();
+  sources.mouthsPath = writeFile(test_support::tempDir() / "mouths.geojson", kMouths);
+  STRAHLER_ASSIGN_OR_ASSERT(auto spec, loadWorldSpec(sources));
+  const WorldSpec& w = spec;
   ASSERT_EQ(w.mouths.size(), 3u);
   EXPECT_EQ(w.mouths[0].priority, 3);
   EXPECT_EQ(w.mouths[1].priority, 1);
@@ -191,7 +187,7 @@ TEST(WorldSpec, MouthsAreReadWithPrioritiesAndProjected) {
 TEST(WorldSpec, MouthWithNonPointGeometry) {
   WorldSources sources;
   sources.mouthsPath =
-      writeFile(testing::tempDir() / "mouths.geojson",
+      writeFile(test_support::tempDir() / "mouths.geojson",
                 R"({"type": "Feature", "geometry": {"type": "Polygon", "coordinates": []}})");
   EXPECT_TRUE(failsWith(loadWorldSpec(sources), ErrorCode::kInvalidInput,
                         "mouths: feature 0: geometry type Polygon is not a Point or MultiPoint"));
@@ -199,7 +195,7 @@ TEST(WorldSpec, MouthWithNonPointGeometry) {
 
 TEST(WorldSpec, MouthWithPriorityZero) {
   WorldSources sources;
-  sources.mouthsPath = writeFile(testing::tempDir() / "mouths.geojson",
+  sources.mouthsPath = writeFile(test_support::tempDir() / "mouths.geojson",
                                  R"({"type": "FeatureCollection", "features": [
       {"type": "Feature", "properties": {"priority": 2},
        "geometry": {"type": "Point", "coordinates": [-27.03, 43.72]}},
@@ -213,7 +209,7 @@ TEST(WorldSpec, TooManyMouths) {
   InputLimits limits;
   limits.maxMouths = 2;
   WorldSources sources;
-  sources.mouthsPath = writeFile(testing::tempDir() / "mouths.geojson", kMouths);
+  sources.mouthsPath = writeFile(test_support::tempDir() / "mouths.geojson", kMouths);
   EXPECT_TRUE(failsWith(loadWorldSpec(sources, limits), ErrorCode::kLimitExceeded,
                         "mouths: feature 1: point 1: more than 2 mouths"));
 }
@@ -221,19 +217,18 @@ TEST(WorldSpec, TooManyMouths) {
 /// A 2x1 PNG, black on the west and white on the east.
 void writeHalfAndHalf(const std::filesystem::path& path) {
   const image::RgbImage image{2, 1, {0, 0, 0, 255, 255, 255}};
-  ASSERT_TRUE(image::writePng(path.string(), image).ok());
+  STRAHLER_ASSERT_OK(image::writePng(path.string(), image));
 }
 
 TEST(WorldSpec, ConstraintImagesAreLoadedRelativeToTheParamsFile) {
-  const auto dir = testing::tempDir();
+  const auto dir = test_support::tempDir();
   std::filesystem::create_directories(dir / "maps");
   writeHalfAndHalf(dir / "maps" / "m.png");
   WorldSources sources;
   sources.paramsPath = writeFile(dir / "params.json", R"({"constraints": [
       {"kind": "mountainousness", "image": "maps/m.png", "bounds": [-28, 43, -26, 44]}]})");
-  auto spec = loadWorldSpec(sources);
-  ASSERT_TRUE(spec.ok()) << spec.error().message;
-  const WorldSpec& w = spec.value();
+  STRAHLER_ASSIGN_OR_ASSERT(auto spec, loadWorldSpec(sources));
+  const WorldSpec& w = spec;
   ASSERT_EQ(w.constraints.size(), 1u);
   const auto at = [&](double lon, double lat) {
     return w.constraintAt(ConstraintKind::kMountainousness, w.projection.forward({lon, lat}));
@@ -247,7 +242,7 @@ TEST(WorldSpec, ConstraintImagesAreLoadedRelativeToTheParamsFile) {
 }
 
 TEST(WorldSpec, MissingConstraintImage) {
-  const auto dir = testing::tempDir();
+  const auto dir = test_support::tempDir();
   WorldSources sources;
   sources.paramsPath = writeFile(dir / "params.json", R"({"constraints": [
       {"kind": "riverSlope", "image": "gone.png", "bounds": [-28, 43, -26, 44]}]})");
@@ -256,7 +251,7 @@ TEST(WorldSpec, MissingConstraintImage) {
 }
 
 TEST(WorldSpec, ConstraintAwayFromTheLand) {
-  const auto dir = testing::tempDir();
+  const auto dir = test_support::tempDir();
   writeHalfAndHalf(dir / "m.png");
   WorldSources sources;
   sources.paramsPath = writeFile(dir / "params.json", R"({"constraints": [

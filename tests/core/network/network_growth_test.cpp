@@ -32,8 +32,8 @@ class NetworkInvariants : public ::testing::TestWithParam<std::string> {
 protected:
   static GrownWorld make(const std::string& name) {
     if (name == "mallorca")
-      return grow(testing::mallorcaSpec());
-    return grow(testing::defaultIslandSpec());
+      return grow(test_support::mallorcaSpec());
+    return grow(test_support::defaultIslandSpec());
   }
 };
 
@@ -133,8 +133,8 @@ TEST_P(NetworkInvariants, SlopesBetweenNeighboursStayBelowKappa) {
 INSTANTIATE_TEST_SUITE_P(Worlds, NetworkInvariants, ::testing::Values("default", "mallorca"));
 
 TEST(NetworkGrowth, SameSeedGivesIdenticalGraph) {
-  const GrownWorld a = grow(testing::defaultIslandSpec(7));
-  const GrownWorld b = grow(testing::defaultIslandSpec(7));
+  const GrownWorld a = grow(test_support::defaultIslandSpec(7));
+  const GrownWorld b = grow(test_support::defaultIslandSpec(7));
   ASSERT_EQ(a.network.nodes.size(), b.network.nodes.size());
   for (std::size_t i = 0; i < a.network.nodes.size(); ++i) {
     const RiverNode &x = a.network.nodes[i], &y = b.network.nodes[i];
@@ -147,8 +147,8 @@ TEST(NetworkGrowth, SameSeedGivesIdenticalGraph) {
 }
 
 TEST(NetworkGrowth, DifferentSeedsGiveDifferentGraphs) {
-  const GrownWorld a = grow(testing::defaultIslandSpec(1));
-  const GrownWorld b = grow(testing::defaultIslandSpec(2));
+  const GrownWorld a = grow(test_support::defaultIslandSpec(1));
+  const GrownWorld b = grow(test_support::defaultIslandSpec(2));
   bool differs = a.network.nodes.size() != b.network.nodes.size();
   for (std::size_t i = 0; !differs && i < a.network.nodes.size(); ++i)
     differs = !(a.network.nodes[i].position == b.network.nodes[i].position);
@@ -156,7 +156,7 @@ TEST(NetworkGrowth, DifferentSeedsGiveDifferentGraphs) {
 }
 
 TEST(NetworkGrowth, RefusesWorldsWithTooManyNodes) {
-  input::WorldSpec spec = testing::corsicaSpec(); // 8,700 km² at 50 m edges: ~4.8M nodes
+  input::WorldSpec spec = test_support::corsicaSpec(); // 8,700 km² at 50 m edges: ~4.8M nodes
   spec.params.edgeLength = 50.0;
   spec.params.sigma = 36.0;
   geometry::PolygonIndex land(spec.land);
@@ -196,7 +196,7 @@ double maxRise(const RiverNetwork& network) {
 }
 
 TEST(NetworkGrowth, FlatConstraintImageGivesGentleRivers) {
-  input::WorldSpec spec = testing::defaultIslandSpec();
+  input::WorldSpec spec = test_support::defaultIslandSpec();
   spec.constraints.push_back(
       uniformConstraint(spec, input::ConstraintKind::kMountainousness, 0.0f));
   const GrownWorld w = grow(std::move(spec));
@@ -205,7 +205,7 @@ TEST(NetworkGrowth, FlatConstraintImageGivesGentleRivers) {
 }
 
 TEST(NetworkGrowth, SteepRiverSlopeImageGivesSteepRivers) {
-  input::WorldSpec spec = testing::defaultIslandSpec();
+  input::WorldSpec spec = test_support::defaultIslandSpec();
   spec.constraints.push_back(uniformConstraint(spec, input::ConstraintKind::kRiverSlope, 1.0f));
   const GrownWorld w = grow(std::move(spec));
   const input::Params& p = w.spec.params;

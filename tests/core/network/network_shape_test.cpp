@@ -145,18 +145,18 @@ class NetworkShape : public ::testing::TestWithParam<std::string> {
 protected:
   static input::WorldSpec spec(const std::string& name) {
     if (name == "mallorca")
-      return testing::mallorcaSpec();
+      return test_support::mallorcaSpec();
     if (name == "corsica")
-      return testing::corsicaSpec();
+      return test_support::corsicaSpec();
     if (name.starts_with("mallorca-x")) { // Mallorca scaled: x4 is 14,740 km², x16 58,960
       const double scale = std::sqrt(std::stod(name.substr(10)));
-      input::WorldSpec scaled = testing::mallorcaSpec();
+      input::WorldSpec scaled = test_support::mallorcaSpec();
       for (geometry::Polygon& p : scaled.land)
         for (geometry::Vec2& v : p.outer)
           v = v * scale;
       return scaled;
     }
-    return testing::defaultIslandSpec();
+    return test_support::defaultIslandSpec();
   }
 };
 

@@ -1,3 +1,6 @@
+#include "ci_environment.h"
+#include "result_matchers.h"
+
 #include "strahler/image/image.h"
 #include "strahler/quality/dem_file.h"
 #include "strahler/quality/relief.h"
@@ -34,9 +37,8 @@ constexpr const char* kHeader = "ncols 3\nnrows 2\nxllcorner 100\nyllcorner 200\
 
 TEST(DemFile, ReadsAnEsriAsciiGridNorthRowFirst) {
   const std::string path = writeText("good.asc", std::string(kHeader) + "1 2 3\r\n4 -9999 6\n");
-  const auto raster = readEsriAsciiGrid(path);
-  ASSERT_TRUE(raster.ok()) << raster.error().message;
-  const HeightRaster& r = raster.value();
+  STRAHLER_ASSIGN_OR_ASSERT(const auto raster, readEsriAsciiGrid(path));
+  const HeightRaster& r = raster;
   EXPECT_EQ(r.width, 3);
   EXPECT_EQ(r.height, 2);
   EXPECT_DOUBLE_EQ(r.cellSize, 10.0);
@@ -53,13 +55,11 @@ TEST(DemFile, ReadsAnEsriAsciiGridNorthRowFirst) {
 TEST(DemFile, AcceptsCentreCoordinatesAnyCaseAndValuesAcrossLines) {
   const std::string path = writeText(
       "centre.asc", "NCOLS 2\nNRows 2\nxllcenter 0\nyllcenter 0\nCellSize 5\n1 2\n3\n4\n");
-  const auto raster = readDemFile(path, std::nullopt);
-  ASSERT_TRUE(raster.ok()) << raster.error().message;
-  EXPECT_DOUBLE_EQ(raster.value().origin.x, 0.0);
-  EXPECT_EQ(raster.value().heights[0], 3.0f);
-  const auto override = readDemFile(path, 30.0);
-  ASSERT_TRUE(override.ok());
-  EXPECT_DOUBLE_EQ(override.value().cellSize, 30.0);
+  STRAHLER_ASSIGN_OR_ASSERT(const auto raster, readDemFile(path, std::nullopt));
+  EXPECT_DOUBLE_EQ(raster.origin.x, 0.0);
+  EXPECT_EQ(raster.heights[0], 3.0f);
+  STRAHLER_ASSIGN_OR_ASSERT(const auto override, readDemFile(path, 30.0));
+  EXPECT_DOUBLE_EQ(override.cellSize, 30.0);
 }
 
 struct BadGrid {
@@ -147,16 +147,15 @@ TEST(DemFile, AMissingFileIsNotFound) {
 TEST(DemFile, ReadsImagesAsStoredValuesGivenACellSize) {
   image::RgbImage png{2, 2, {10, 0, 0, 20, 0, 0, 30, 0, 0, 250, 0, 0}};
   const std::string path = scratch("dem.png").string();
-  ASSERT_TRUE(image::writePng(path, png).ok());
+  STRAHLER_ASSERT_OK(image::writePng(path, png));
   const auto without = readDemFile(path, std::nullopt);
   ASSERT_FALSE(without.ok());
   EXPECT_NE(without.error().message.find("--cell-size"), std::string::npos);
-  const auto raster = readDemFile(path, 25.0);
-  ASSERT_TRUE(raster.ok()) << raster.error().message;
-  EXPECT_DOUBLE_EQ(raster.value().cellSize, 25.0);
+  STRAHLER_ASSIGN_OR_ASSERT(const auto raster, readDemFile(path, 25.0));
+  EXPECT_DOUBLE_EQ(raster.cellSize, 25.0);
   // Top image row first in the file, south row first in the raster; values not normalised.
-  EXPECT_EQ(raster.value().heights[0], 30.0f);
-  EXPECT_EQ(raster.value().heights[3], 20.0f);
+  EXPECT_EQ(raster.heights[0], 30.0f);
+  EXPECT_EQ(raster.heights[3], 20.0f);
   EXPECT_FALSE(readDemFile(writeText("junk.tif", "not an image"), 10.0).ok());
 }
 
@@ -164,12 +163,11 @@ TEST(DemFile, ReadsImagesAsStoredValuesGivenACellSize) {
 TEST(DemFile, TheOrkhonValleyReferenceGivesItsPublishedFigures) {
   const std::string path = std::string(STRAHLER_REFERENCE_DIR) + "/orkhon-valley-92m.asc";
   if (!fs::exists(path))
-    GTEST_SKIP() << path << " is absent";
-  const auto raster = readDemFile(path, std::nullopt);
-  ASSERT_TRUE(raster.ok()) << raster.error().message;
-  EXPECT_EQ(raster.value().width, 98);
-  EXPECT_EQ(raster.value().height, 180);
-  const ReliefFigures f = measureRelief(raster.value());
+    STRAHLER_SKIP_UNLESS_CI(path << " is absent");
+  STRAHLER_ASSIGN_OR_ASSERT(const auto raster, readDemFile(path, std::nullopt));
+  EXPECT_EQ(raster.width, 98);
+  EXPECT_EQ(raster.height, 180);
+  const ReliefFigures f = measureRelief(raster);
   EXPECT_NEAR(f.slopeArea.theta, 0.34, 0.03);
   EXPECT_NEAR(f.slopeArea.r2, 0.98, 0.03);
   EXPECT_NEAR(f.slopes.p50Deg, 11.1, 0.5);
@@ -179,12 +177,12 @@ TEST(DemFile, TheOrkhonValleyReferenceGivesItsPublishedFigures) {
   EXPECT_EQ(f.confluences.threeOrMore, 0u);
   // The published 0.47 km/km² counts every channel cell as one cell side long (760 cells of
   // 91.67 m over 148.2 km²); ours counts diagonal steps √2 cells long, hence about 15 % more.
-  const FlowField flow = computeFlowField(raster.value());
+  const FlowField flow = computeFlowField(raster);
   std::size_t channelCells = 0;
   for (std::uint32_t c : flow.order)
     channelCells += flow.areaKm2[c] >= 1.0 ? 1 : 0;
-  const double landKm2 = double(flow.order.size()) * std::pow(raster.value().cellSize, 2) * 1e-6;
-  EXPECT_NEAR(double(channelCells) * raster.value().cellSize * 1e-3 / landKm2, 0.47, 0.01);
+  const double landKm2 = double(flow.order.size()) * std::pow(raster.cellSize, 2) * 1e-6;
+  EXPECT_NEAR(double(channelCells) * raster.cellSize * 1e-3 / landKm2, 0.47, 0.01);
   EXPECT_NEAR(f.drainageDensity1, 0.54, 0.02);
   EXPECT_NEAR(f.dissection, 5.8, 0.4);
 }

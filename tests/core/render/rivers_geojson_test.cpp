@@ -1,3 +1,4 @@
+#include "result_matchers.h"
 #include "test_worlds.h"
 
 #include "strahler/construction/world_builder.h"
@@ -28,10 +29,9 @@ struct GeneratedWorld {
 
 const GeneratedWorld& island() {
   static const GeneratedWorld world = [] {
-    GeneratedWorld w{testing::defaultIslandSpec(), {}};
+    GeneratedWorld w{test_support::defaultIslandSpec(), {}};
     auto data = construction::generateWorldData(w.spec, "rivers-geojson-test");
-    EXPECT_TRUE(data.ok());
-    w.data = std::move(data).value();
+    w.data = test_support::valueOf(std::move(data));
     return w;
   }();
   return world;

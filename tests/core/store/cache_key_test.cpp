@@ -1,5 +1,7 @@
 // Cache keys: a function of what determines the world, and of nothing else.
 
+#include "result_matchers.h"
+
 #include "strahler/store/cache_key.h"
 
 #include <gtest/gtest.h>
@@ -25,8 +27,7 @@ std::string islandGeoJson(double west = 8.5) {
 input::WorldSpec makeSpec(const std::string& name = "island", const input::Params& params = {},
                           const std::string& geoJson = islandGeoJson()) {
   auto spec = input::makeWorldSpec(name, geoJson, params);
-  EXPECT_TRUE(spec.ok()) << spec.error().message;
-  return std::move(spec).value();
+  return test_support::valueOf(std::move(spec));
 }
 
 constexpr std::string_view kVersion = "0.1.0";
@@ -86,15 +87,17 @@ TEST(CacheKey, RepairedCoastIsKeyedByItsGeometryAlone) {
       R"({"type":"Polygon","coordinates":[[[8.5,42],[8.6,42.1],[8.6,42],[8.5,42.11],[8.5,42]]]})";
   auto repaired = input::makeWorldSpec("bowtie", bowtie, {}, {}, true);
   auto repairedOther = input::makeWorldSpec("other", other, {}, {}, true);
-  ASSERT_TRUE(repaired.ok() && repairedOther.ok());
+  STRAHLER_ASSERT_OK(repaired);
+  STRAHLER_ASSERT_OK(repairedOther);
   ASSERT_FALSE(repaired.value().repairs.empty());
   const std::string key = cacheKey(repaired.value(), kVersion);
   EXPECT_NE(cacheKey(repairedOther.value(), kVersion), key);
   // The same geometry given as a valid coastline (no repair needed) shares the key: the key
   // follows the land, not how it was obtained.
-  auto same = input::makeWorldSpec("same", multiPolygonGeoJson(repaired.value().landLonLat), {});
-  ASSERT_TRUE(same.ok()) << same.error().message;
-  EXPECT_EQ(cacheKey(same.value(), kVersion), key);
+  STRAHLER_ASSIGN_OR_ASSERT(
+      auto same,
+      input::makeWorldSpec("same", multiPolygonGeoJson(repaired.value().landLonLat), {}));
+  EXPECT_EQ(cacheKey(same, kVersion), key);
 }
 
 TEST(CacheKey, UserMouthsChangeTheKey) {

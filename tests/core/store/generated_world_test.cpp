@@ -1,3 +1,4 @@
+#include "result_matchers.h"
 #include "test_worlds.h"
 
 #include "strahler/construction/world.h"
@@ -12,9 +13,9 @@ namespace {
 
 const construction::WorldData& generatedIsland() {
   static const construction::WorldData world = [] {
-    const input::WorldSpec spec = testing::defaultIslandSpec();
-    return construction::generateWorldData(spec, cacheKey(spec, construction::kGeneratorVersion))
-        .value();
+    const input::WorldSpec spec = test_support::defaultIslandSpec();
+    return test_support::valueOf(
+        construction::generateWorldData(spec, cacheKey(spec, construction::kGeneratorVersion)));
   }();
   return world;
 }
@@ -30,9 +31,8 @@ TEST(GeneratedWorld, FitsTheSizeBudget) {
 TEST(GeneratedWorld, RoundTripsExactly) {
   const construction::WorldData& world = generatedIsland();
   const std::string bytes = encodeWorld(world);
-  auto decoded = decodeWorld(bytes, "island");
-  ASSERT_TRUE(decoded.ok()) << decoded.error().message;
-  const construction::WorldData& back = decoded.value();
+  STRAHLER_ASSIGN_OR_ASSERT(auto decoded, decodeWorld(bytes, "island"));
+  const construction::WorldData& back = decoded;
   EXPECT_EQ(back.terrain, world.terrain);
   EXPECT_EQ(back.rivers, world.rivers);
   EXPECT_EQ(back.blocks, world.blocks);
@@ -55,10 +55,10 @@ TEST(GeneratedWorld, RoundTripsExactly) {
 }
 
 TEST(GeneratedWorld, SameSpecGivesSameBytes) {
-  const input::WorldSpec spec = testing::defaultIslandSpec();
+  const input::WorldSpec spec = test_support::defaultIslandSpec();
   const auto again =
       construction::generateWorldData(spec, cacheKey(spec, construction::kGeneratorVersion));
-  ASSERT_TRUE(again.ok());
+  STRAHLER_ASSERT_OK(again);
   EXPECT_EQ(encodeWorld(again.value()), encodeWorld(generatedIsland()));
 }
 

@@ -15,11 +15,11 @@ namespace strahler::store {
 namespace {
 
 using base::ErrorCode;
-using testing::failsWith;
-using testing::listDir;
-using testing::makeSmallWorld;
-using testing::scratchDir;
-using testing::worldsEqual;
+using test_support::failsWith;
+using test_support::listDir;
+using test_support::makeSmallWorld;
+using test_support::scratchDir;
+using test_support::worldsEqual;
 
 void overwrite(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
@@ -48,21 +48,19 @@ TEST(WorldCache, PathForNamesTheKeyInsideTheDirectory) {
 TEST(WorldCache, MissIsNullopt) {
   WorldCache cache(scratchDir() + "/not/created/yet");
   std::string warning;
-  auto loaded = cache.load("0123456789abcdef0123456789abcdef", &warning);
-  ASSERT_TRUE(loaded.ok()) << loaded.error().message;
-  EXPECT_FALSE(loaded.value().has_value());
+  STRAHLER_ASSIGN_OR_ASSERT(auto loaded, cache.load("0123456789abcdef0123456789abcdef", &warning));
+  EXPECT_FALSE(loaded.has_value());
   EXPECT_TRUE(warning.empty());
 }
 
 TEST(WorldCache, SaveThenLoadGivesTheSameWorld) {
   WorldCache cache(scratchDir() + "/nested/cache");
   const construction::WorldData world = makeSmallWorld(8);
-  ASSERT_TRUE(cache.save(world).ok());
+  STRAHLER_ASSERT_OK(cache.save(world));
   std::string warning;
-  auto loaded = cache.load(world.cacheKey, &warning);
-  ASSERT_TRUE(loaded.ok()) << loaded.error().message;
-  ASSERT_TRUE(loaded.value().has_value());
-  EXPECT_TRUE(worldsEqual(*loaded.value(), world));
+  STRAHLER_ASSIGN_OR_ASSERT(auto loaded, cache.load(world.cacheKey, &warning));
+  ASSERT_TRUE(loaded.has_value());
+  EXPECT_TRUE(worldsEqual(*loaded, world));
   EXPECT_TRUE(warning.empty());
   EXPECT_EQ(listDir(cache.dir()), std::vector<std::string>{world.cacheKey + ".world"});
 }
@@ -70,7 +68,7 @@ TEST(WorldCache, SaveThenLoadGivesTheSameWorld) {
 TEST(WorldCache, CorruptFileIsReportedMovedAsideAndThenMissed) {
   WorldCache cache(scratchDir());
   const construction::WorldData world = makeSmallWorld();
-  ASSERT_TRUE(cache.save(world).ok());
+  STRAHLER_ASSERT_OK(cache.save(world));
   std::string bytes = encodeWorld(world);
   bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x01);
   overwrite(cache.pathFor(world.cacheKey), bytes);
@@ -78,16 +76,15 @@ TEST(WorldCache, CorruptFileIsReportedMovedAsideAndThenMissed) {
                   {"ignoring corrupt cached world", "checksum mismatch", "regenerating",
                    cache.pathFor(world.cacheKey) + ".corrupt"});
   std::string warning;
-  auto again = cache.load(world.cacheKey, &warning);
-  ASSERT_TRUE(again.ok());
-  EXPECT_FALSE(again.value().has_value());
+  STRAHLER_ASSIGN_OR_ASSERT(auto again, cache.load(world.cacheKey, &warning));
+  EXPECT_FALSE(again.has_value());
   EXPECT_TRUE(warning.empty()) << warning;
 }
 
 TEST(WorldCache, TruncatedFileIsDiscarded) {
   WorldCache cache(scratchDir());
   const construction::WorldData world = makeSmallWorld();
-  ASSERT_TRUE(cache.save(world).ok());
+  STRAHLER_ASSERT_OK(cache.save(world));
   overwrite(cache.pathFor(world.cacheKey), encodeWorld(world).substr(0, 100));
   expectDiscarded(cache, world.cacheKey, {"truncated or extended"});
 }
@@ -97,8 +94,8 @@ TEST(WorldCache, OtherFormatVersionIsDiscarded) {
   const construction::WorldData world = makeSmallWorld();
   const std::string bytes = encodeWorld(world);
   auto payload = detail::unframe(bytes, "w"); // A view into `bytes`.
-  ASSERT_TRUE(payload.ok());
-  ASSERT_TRUE(cache.save(world).ok());
+  STRAHLER_ASSERT_OK(payload);
+  STRAHLER_ASSERT_OK(cache.save(world));
   overwrite(cache.pathFor(world.cacheKey), detail::frame(payload.value(), 1));
   expectDiscarded(cache, world.cacheKey, {"has format version 1, this strahler reads version 2"});
 }
@@ -116,11 +113,10 @@ TEST(WorldCache, FileHoldingAnotherKeyIsDiscarded) {
 TEST(WorldCache, WarningMayBeOmitted) {
   WorldCache cache(scratchDir());
   const construction::WorldData world = makeSmallWorld();
-  ASSERT_TRUE(cache.save(world).ok());
+  STRAHLER_ASSERT_OK(cache.save(world));
   overwrite(cache.pathFor(world.cacheKey), "garbage");
-  auto loaded = cache.load(world.cacheKey, nullptr);
-  ASSERT_TRUE(loaded.ok());
-  EXPECT_FALSE(loaded.value().has_value());
+  STRAHLER_ASSIGN_OR_ASSERT(auto loaded, cache.load(world.cacheKey, nullptr));
+  EXPECT_FALSE(loaded.has_value());
 }
 
 TEST(WorldCache, InvalidKeysAreRefused) {

@@ -18,9 +18,9 @@ namespace {
 using construction::WorldData;
 using primitives::quantize;
 using primitives::Quantum;
-using testing::makeLargeWorld;
-using testing::makeSmallWorld;
-using testing::worldsEqual;
+using test_support::makeLargeWorld;
+using test_support::makeSmallWorld;
+using test_support::worldsEqual;
 
 std::uint64_t littleEndian(const std::string& bytes, std::size_t offset, int count) {
   std::uint64_t v = 0;
@@ -32,25 +32,22 @@ std::uint64_t littleEndian(const std::string& bytes, std::size_t offset, int cou
 TEST(WorldCodec, SmallWorldRoundTripsExactly) {
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     const WorldData world = makeSmallWorld(seed);
-    auto decoded = decodeWorld(encodeWorld(world), "small");
-    ASSERT_TRUE(decoded.ok()) << decoded.error().message;
-    EXPECT_TRUE(worldsEqual(decoded.value(), world)) << "seed " << seed;
+    STRAHLER_ASSIGN_OR_ASSERT(auto decoded, decodeWorld(encodeWorld(world), "small"));
+    EXPECT_TRUE(worldsEqual(decoded, world)) << "seed " << seed;
   }
 }
 
 TEST(WorldCodec, LargeWorldRoundTripsExactly) {
   const WorldData world = makeLargeWorld();
-  auto decoded = decodeWorld(encodeWorld(world), "large");
-  ASSERT_TRUE(decoded.ok()) << decoded.error().message;
-  EXPECT_TRUE(worldsEqual(decoded.value(), world));
+  STRAHLER_ASSIGN_OR_ASSERT(auto decoded, decodeWorld(encodeWorld(world), "large"));
+  EXPECT_TRUE(worldsEqual(decoded, world));
 }
 
 TEST(WorldCodec, ReencodingADecodedWorldGivesTheSameBytes) {
   for (const WorldData& world : {makeSmallWorld(3), makeLargeWorld(200.0)}) {
     const std::string bytes = encodeWorld(world);
-    auto decoded = decodeWorld(bytes, "w");
-    ASSERT_TRUE(decoded.ok()) << decoded.error().message;
-    EXPECT_EQ(encodeWorld(decoded.value()), bytes);
+    STRAHLER_ASSIGN_OR_ASSERT(auto decoded, decodeWorld(bytes, "w"));
+    EXPECT_EQ(encodeWorld(decoded), bytes);
   }
 }
 
@@ -61,9 +58,8 @@ TEST(WorldCodec, EncodingIsDeterministic) {
 
 TEST(WorldCodec, EmptyWorldRoundTrips) {
   WorldData empty;
-  auto decoded = decodeWorld(encodeWorld(empty), "empty");
-  ASSERT_TRUE(decoded.ok()) << decoded.error().message;
-  EXPECT_TRUE(worldsEqual(decoded.value(), empty));
+  STRAHLER_ASSIGN_OR_ASSERT(auto decoded, decodeWorld(encodeWorld(empty), "empty"));
+  EXPECT_TRUE(worldsEqual(decoded, empty));
 }
 
 TEST(WorldCodec, ExtremeButValidValuesRoundTrip) {
@@ -79,9 +75,8 @@ TEST(WorldCodec, ExtremeButValidValuesRoundTrip) {
   world.network.mouths[0].inward = {0.1234567890123456789, -0.9876543210987654321};
   world.projectionCenter = {-180.0, 90.0};
   world.stageSeconds.push_back({"", 0.0});
-  auto decoded = decodeWorld(encodeWorld(world), "extreme");
-  ASSERT_TRUE(decoded.ok()) << decoded.error().message;
-  EXPECT_TRUE(worldsEqual(decoded.value(), world));
+  STRAHLER_ASSIGN_OR_ASSERT(auto decoded, decodeWorld(encodeWorld(world), "extreme"));
+  EXPECT_TRUE(worldsEqual(decoded, world));
 }
 
 TEST(WorldCodec, HeaderFollowsTheDocumentedLayout) {

@@ -18,9 +18,9 @@ namespace strahler::store {
 namespace {
 
 using base::ErrorCode;
-using testing::failsWith;
-using testing::makeLargeWorld;
-using testing::makeSmallWorld;
+using test_support::failsWith;
+using test_support::makeLargeWorld;
+using test_support::makeSmallWorld;
 
 const std::string& smallBytes() {
   static const std::string bytes = encodeWorld(makeSmallWorld());
@@ -109,9 +109,8 @@ TEST(WorldCorruption, WrongMagicIsRefused) {
 }
 
 TEST(WorldCorruption, OtherFormatVersionIsNamed) {
-  auto payload = detail::unframe(smallBytes(), "w");
-  ASSERT_TRUE(payload.ok());
-  const std::string future = detail::frame(payload.value(), 7);
+  STRAHLER_ASSIGN_OR_ASSERT(auto payload, detail::unframe(smallBytes(), "w"));
+  const std::string future = detail::frame(payload, 7);
   EXPECT_TRUE(failsWith(decodeWorld(future, "old.world"), ErrorCode::kCorrupt,
                         "world file 'old.world' has format version 7, this strahler reads "
                         "version 2"));
@@ -229,7 +228,7 @@ const std::vector<Inconsistency>& inconsistencies() {
 }
 
 TEST(WorldCorruption, InconsistentPayloadsAreRefusedWithAPreciseMessage) {
-  ASSERT_TRUE(decodeMutated([](v1::World&) {}).ok());
+  STRAHLER_ASSERT_OK(decodeMutated([](v1::World&) {}));
   for (const Inconsistency& c : inconsistencies()) {
     const auto decoded = decodeMutated(c.mutate);
     EXPECT_TRUE(failsWith(decoded, ErrorCode::kCorrupt, c.message)) << c.name;
@@ -242,12 +241,11 @@ TEST(WorldCorruption, InconsistentPayloadsAreRefusedWithAPreciseMessage) {
 TEST(WorldCorruption, DamagedPayloadsWithValidChecksumsNeverCrash) {
   // Whatever the reader accepts must be a valid world: the writer (which asserts every
   // invariant) writes it back and the reader returns it unchanged.
-  auto payload = detail::unframe(smallBytes(), "w");
-  ASSERT_TRUE(payload.ok());
+  STRAHLER_ASSIGN_OR_ASSERT(auto payload, detail::unframe(smallBytes(), "w"));
   base::Rng rng(17);
   int accepted = 0;
   for (int trial = 0; trial < 3000; ++trial) {
-    std::string damaged(payload.value());
+    std::string damaged(payload);
     for (std::uint32_t k = 0, n = 1 + rng.below(3); k < n; ++k)
       damaged[rng.below(static_cast<std::uint32_t>(damaged.size()))] =
           static_cast<char>(rng.below(256));
@@ -257,9 +255,8 @@ TEST(WorldCorruption, DamagedPayloadsWithValidChecksumsNeverCrash) {
       continue;
     }
     ++accepted;
-    auto again = decodeWorld(encodeWorld(decoded.value()), "again");
-    ASSERT_TRUE(again.ok()) << again.error().message;
-    ASSERT_TRUE(testing::worldsEqual(again.value(), decoded.value()));
+    STRAHLER_ASSIGN_OR_ASSERT(auto again, decodeWorld(encodeWorld(decoded.value()), "again"));
+    ASSERT_TRUE(test_support::worldsEqual(again, decoded.value()));
   }
   std::cout << "[ damaged  ] " << accepted << " of 3000 damaged payloads still decoded\n";
 }

@@ -18,12 +18,12 @@ namespace strahler::store {
 namespace {
 
 using base::ErrorCode;
-using testing::failsWith;
-using testing::listDir;
-using testing::makeLargeWorld;
-using testing::makeSmallWorld;
-using testing::scratchDir;
-using testing::worldsEqual;
+using test_support::failsWith;
+using test_support::listDir;
+using test_support::makeLargeWorld;
+using test_support::makeSmallWorld;
+using test_support::scratchDir;
+using test_support::worldsEqual;
 
 std::string readBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -33,21 +33,19 @@ std::string readBytes(const std::string& path) {
 TEST(WorldFile, WriteThenReadRoundTrips) {
   const std::string path = scratchDir() + "/w.world";
   const construction::WorldData world = makeSmallWorld(4);
-  ASSERT_TRUE(writeWorldFile(path, world).ok());
+  STRAHLER_ASSERT_OK(writeWorldFile(path, world));
   EXPECT_EQ(readBytes(path), encodeWorld(world));
-  auto read = readWorldFile(path);
-  ASSERT_TRUE(read.ok()) << read.error().message;
-  EXPECT_TRUE(worldsEqual(read.value(), world));
+  STRAHLER_ASSIGN_OR_ASSERT(auto read, readWorldFile(path));
+  EXPECT_TRUE(worldsEqual(read, world));
 }
 
 TEST(WorldFile, OverwritingReplacesTheFileAndLeavesNoTemporaryFile) {
   const std::string dir = scratchDir();
   const std::string path = dir + "/w.world";
-  ASSERT_TRUE(writeWorldFile(path, makeSmallWorld(1)).ok());
-  ASSERT_TRUE(writeWorldFile(path, makeSmallWorld(2)).ok());
-  auto read = readWorldFile(path);
-  ASSERT_TRUE(read.ok()) << read.error().message;
-  EXPECT_TRUE(worldsEqual(read.value(), makeSmallWorld(2)));
+  STRAHLER_ASSERT_OK(writeWorldFile(path, makeSmallWorld(1)));
+  STRAHLER_ASSERT_OK(writeWorldFile(path, makeSmallWorld(2)));
+  STRAHLER_ASSIGN_OR_ASSERT(auto read, readWorldFile(path));
+  EXPECT_TRUE(worldsEqual(read, makeSmallWorld(2)));
   EXPECT_EQ(listDir(dir), std::vector<std::string>{"w.world"});
 }
 
@@ -137,7 +135,7 @@ TEST(WorldFile, FailedWriteLeavesTheTargetIntactAndNoTemporaryFile) {
   const std::string dir = scratchDir();
   const std::string path = dir + "/w.world";
   const construction::WorldData old = makeSmallWorld(1);
-  ASSERT_TRUE(writeWorldFile(path, old).ok());
+  STRAHLER_ASSERT_OK(writeWorldFile(path, old));
   base::Status status = base::Ok{};
   {
     const FileSizeLimit limit(4096); // The large world needs far more.
@@ -145,9 +143,8 @@ TEST(WorldFile, FailedWriteLeavesTheTargetIntactAndNoTemporaryFile) {
   }
   EXPECT_TRUE(failsWith(status, ErrorCode::kIoError, "cannot write a temporary file for '" + path));
   EXPECT_EQ(listDir(dir), std::vector<std::string>{"w.world"});
-  auto read = readWorldFile(path);
-  ASSERT_TRUE(read.ok()) << read.error().message;
-  EXPECT_TRUE(worldsEqual(read.value(), old));
+  STRAHLER_ASSIGN_OR_ASSERT(auto read, readWorldFile(path));
+  EXPECT_TRUE(worldsEqual(read, old));
 }
 
 TEST(WorldFile, FailedRenameRemovesTheTemporaryFile) {
@@ -165,15 +162,14 @@ TEST(WorldFile, UnwritableDirectoryKeepsTheOldFile) {
     GTEST_SKIP() << "root ignores directory permissions";
   const std::string dir = scratchDir();
   const std::string path = dir + "/w.world";
-  ASSERT_TRUE(writeWorldFile(path, makeSmallWorld(1)).ok());
+  STRAHLER_ASSERT_OK(writeWorldFile(path, makeSmallWorld(1)));
   ::chmod(dir.c_str(), 0555);
   const base::Status status = writeWorldFile(path, makeSmallWorld(2));
   ::chmod(dir.c_str(), 0755);
   EXPECT_TRUE(failsWith(status, ErrorCode::kIoError, path));
   EXPECT_EQ(listDir(dir), std::vector<std::string>{"w.world"});
-  auto read = readWorldFile(path);
-  ASSERT_TRUE(read.ok());
-  EXPECT_TRUE(worldsEqual(read.value(), makeSmallWorld(1)));
+  STRAHLER_ASSIGN_OR_ASSERT(auto read, readWorldFile(path));
+  EXPECT_TRUE(worldsEqual(read, makeSmallWorld(1)));
 }
 
 } // namespace

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <numbers>
 
-namespace strahler::store::testing {
+namespace strahler::store::test_support {
 namespace {
 
 using construction::WorldData;
@@ -271,4 +271,4 @@ std::vector<std::string> listDir(const std::string& dir) {
   return names;
 }
 
-} // namespace strahler::store::testing
+} // namespace strahler::store::test_support

@@ -13,7 +13,7 @@
 #include <string>
 #include <string_view>
 
-namespace strahler::store::testing {
+namespace strahler::store::test_support {
 
 /// A small world: 2 polygons (one with a lake), 2 trees of 12 nodes, a few primitives per
 /// block (some blocks empty), one river primitive without a node, stage times (which files do not
@@ -30,7 +30,7 @@ construction::WorldData makeLargeWorld(double areaKm2 = 1000.0, std::uint64_t se
 ::testing::AssertionResult worldsEqual(const construction::WorldData& a,
                                        const construction::WorldData& b);
 
-using strahler::testing::failsWith; // tests/support/result_matchers.h
+using strahler::test_support::failsWith; // tests/support/result_matchers.h
 
 /// A fresh, empty directory under the build tree named after the running test.
 std::string scratchDir();
@@ -38,4 +38,4 @@ std::string scratchDir();
 /// Names of the entries of `dir`, sorted.
 std::vector<std::string> listDir(const std::string& dir);
 
-} // namespace strahler::store::testing
+} // namespace strahler::store::test_support

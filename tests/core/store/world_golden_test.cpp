@@ -99,9 +99,8 @@ TEST(WorldGolden, Version2PayloadReadsBackTheSameWorld) {
   message.set_params_json(input::canonicalJson(tiny.params));
   std::string payload;
   ASSERT_TRUE(message.SerializeToString(&payload));
-  auto decoded = decodeWorld(detail::frame(payload, 2), "golden");
-  ASSERT_TRUE(decoded.ok()) << decoded.error().message;
-  EXPECT_TRUE(testing::worldsEqual(decoded.value(), tiny));
+  STRAHLER_ASSIGN_OR_ASSERT(auto decoded, decodeWorld(detail::frame(payload, 2), "golden"));
+  EXPECT_TRUE(test_support::worldsEqual(decoded, tiny));
 }
 
 TEST(WorldGolden, TimingsDoNotChangeTheBytes) {

@@ -1,3 +1,4 @@
+#include "result_matchers.h"
 #include "test_worlds.h"
 #include "web_tiles.h"
 
@@ -15,11 +16,11 @@ namespace strahler::tiling {
 namespace {
 
 using geometry::Vec2;
-using testing::webTileAt;
+using test_support::webTileAt;
 
 const construction::World& islandWorld() {
-  static const construction::World world(
-      construction::generateWorldData(testing::defaultIslandSpec(), "tiles").value());
+  static const construction::World world(test_support::valueOf(
+      construction::generateWorldData(test_support::defaultIslandSpec(), "tiles")));
   return world;
 }
 

@@ -2,6 +2,7 @@
 // (one SQLite database, no journal beside it) and its errors. The tables are read by Python's
 // sqlite3 in tests/cli/check_mbtiles.py.
 #include "mbtiles_writer.h"
+#include "result_matchers.h"
 
 #include <gtest/gtest.h>
 
@@ -21,22 +22,21 @@ TEST(MbtilesWriter, StoresIdenticalTilesOnceAndLeavesOneDatabaseFile) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path path = dir / "a.mbtiles";
-  auto writer = MbtilesWriter::create(path.string());
-  ASSERT_TRUE(writer.ok()) << writer.error().message;
+  STRAHLER_ASSIGN_OR_ASSERT(auto writer, MbtilesWriter::create(path.string()));
   for (std::uint32_t x = 0; x < 4; ++x)
-    ASSERT_TRUE(writer.value()->addTile({2, x, 1}, x == 2 ? "land" : "sea").ok());
+    STRAHLER_ASSERT_OK(writer->addTile({2, x, 1}, x == 2 ? "land" : "sea"));
   ArchiveMetadata m;
   m.name = "test";
   m.tileFormat = "png";
   m.encoding = "terrarium";
   m.extra = {{"seed", "7"}};
-  ASSERT_TRUE(writer.value()->finish(m).ok());
-  EXPECT_EQ(writer.value()->stats().tiles, 4u);
-  EXPECT_EQ(writer.value()->stats().uniqueTiles, 2u);
-  EXPECT_EQ(writer.value()->stats().tileBytes, 7u);
-  EXPECT_FALSE(writer.value()->addTile({3, 0, 0}, "late").ok());
-  EXPECT_FALSE(writer.value()->finish(m).ok());
-  writer.value().reset();
+  STRAHLER_ASSERT_OK(writer->finish(m));
+  EXPECT_EQ(writer->stats().tiles, 4u);
+  EXPECT_EQ(writer->stats().uniqueTiles, 2u);
+  EXPECT_EQ(writer->stats().tileBytes, 7u);
+  EXPECT_FALSE(writer->addTile({3, 0, 0}, "late").ok());
+  EXPECT_FALSE(writer->finish(m).ok());
+  writer.reset();
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
   char magic[16] = {};
   std::ifstream(path, std::ios::binary).read(magic, sizeof magic);

@@ -1,5 +1,6 @@
 // The PMTiles v3 header and directory encodings, and the root/leaf split at 16 KiB.
 #include "pmtiles_format.h"
+#include "result_matchers.h"
 
 #include <gtest/gtest.h>
 
@@ -45,12 +46,11 @@ TEST(PmtilesHeader, Is127BytesAndRoundTrips) {
   const std::string bytes = pm::encodeHeader(h);
   ASSERT_EQ(bytes.size(), pm::kHeaderBytes);
   EXPECT_EQ(bytes.substr(0, 8), std::string("PMTiles\x03", 8));
-  auto back = pm::decodeHeader(bytes);
-  ASSERT_TRUE(back.ok());
-  EXPECT_EQ(pm::encodeHeader(back.value()), bytes);
-  EXPECT_EQ(back.value().tileDataLength, 5'000'000'000ull);
-  EXPECT_EQ(back.value().minLonE7, -1800000000);
-  EXPECT_EQ(back.value().centerLatE7, -123456789);
+  STRAHLER_ASSIGN_OR_ASSERT(auto back, pm::decodeHeader(bytes));
+  EXPECT_EQ(pm::encodeHeader(back), bytes);
+  EXPECT_EQ(back.tileDataLength, 5'000'000'000ull);
+  EXPECT_EQ(back.minLonE7, -1800000000);
+  EXPECT_EQ(back.centerLatE7, -123456789);
   EXPECT_FALSE(pm::decodeHeader(bytes.substr(0, 100)).ok());
 }
 
@@ -60,14 +60,12 @@ TEST(PmtilesDirectory, RoundTripsWithVarintsAndContiguousOffsets) {
   const std::string bytes = pm::encodeDirectory(entries);
   // count, ids delta (0, 1, 9), run lengths, lengths (100 = 0x64, 50, 100), offsets (1, 0, 1).
   EXPECT_EQ(bytes, std::string("\x03\x00\x01\x09\x01\x03\x01\x64\x32\x64\x01\x00\x01", 13));
-  auto back = pm::decodeDirectory(bytes);
-  ASSERT_TRUE(back.ok());
-  EXPECT_EQ(back.value(), entries);
+  STRAHLER_ASSIGN_OR_ASSERT(auto back, pm::decodeDirectory(bytes));
+  EXPECT_EQ(back, entries);
 
   const auto many = randomEntries(20000, 7);
-  auto again = pm::decodeDirectory(pm::encodeDirectory(many));
-  ASSERT_TRUE(again.ok());
-  EXPECT_EQ(again.value(), many);
+  STRAHLER_ASSIGN_OR_ASSERT(auto again, pm::decodeDirectory(pm::encodeDirectory(many)));
+  EXPECT_EQ(again, many);
 }
 
 TEST(PmtilesDirectory, RefusesTruncatedBytes) {
@@ -78,51 +76,50 @@ TEST(PmtilesDirectory, RefusesTruncatedBytes) {
 
 TEST(PmtilesDirectory, GzipRoundTrips) {
   const std::string bytes = pm::encodeDirectory(randomEntries(1000, 5));
-  auto packed = pm::compress(bytes, pm::Compression::kGzip);
-  ASSERT_TRUE(packed.ok());
-  EXPECT_EQ(packed.value().substr(0, 2), "\x1f\x8b");
-  auto unpacked = pm::decompress(packed.value(), pm::Compression::kGzip);
-  ASSERT_TRUE(unpacked.ok());
-  EXPECT_EQ(unpacked.value(), bytes);
+  STRAHLER_ASSIGN_OR_ASSERT(auto packed, pm::compress(bytes, pm::Compression::kGzip));
+  EXPECT_EQ(packed.substr(0, 2), "\x1f\x8b");
+  STRAHLER_ASSIGN_OR_ASSERT(auto unpacked, pm::decompress(packed, pm::Compression::kGzip));
+  EXPECT_EQ(unpacked, bytes);
 }
 
 /// Every entry reachable from `d`: the root's leaf pointers expanded.
 std::vector<pm::Entry> flatten(const pm::Directories& d, pm::Compression c) {
   std::vector<pm::Entry> out;
-  const auto root = pm::decodeDirectory(pm::decompress(d.root, c).value()).value();
+  const auto root = strahler::test_support::valueOf(
+      pm::decodeDirectory(strahler::test_support::valueOf(pm::decompress(d.root, c))));
   for (const pm::Entry& e : root) {
     if (e.runLength > 0) {
       out.push_back(e);
       continue;
     }
-    const auto leaf =
-        pm::decodeDirectory(pm::decompress(d.leaves.substr(e.offset, e.length), c).value());
-    out.insert(out.end(), leaf.value().begin(), leaf.value().end());
+    const auto leaf = strahler::test_support::valueOf(pm::decodeDirectory(
+        strahler::test_support::valueOf(pm::decompress(d.leaves.substr(e.offset, e.length), c))));
+    out.insert(out.end(), leaf.begin(), leaf.end());
   }
   return out;
 }
 
 TEST(PmtilesDirectories, SmallDirectoriesStayInTheRoot) {
   const auto entries = randomEntries(500, 11);
-  auto d = pm::buildDirectories(entries, pm::Compression::kGzip);
-  ASSERT_TRUE(d.ok());
-  EXPECT_EQ(d.value().leafCount, 0u);
-  EXPECT_TRUE(d.value().leaves.empty());
-  EXPECT_EQ(flatten(d.value(), pm::Compression::kGzip), entries);
+  STRAHLER_ASSIGN_OR_ASSERT(auto d, pm::buildDirectories(entries, pm::Compression::kGzip));
+  EXPECT_EQ(d.leafCount, 0u);
+  EXPECT_TRUE(d.leaves.empty());
+  EXPECT_EQ(flatten(d, pm::Compression::kGzip), entries);
 }
 
 TEST(PmtilesDirectories, LeavesWhenTheRootWouldExceed16KiB) {
   for (const pm::Compression c : {pm::Compression::kGzip, pm::Compression::kNone}) {
     const auto entries = randomEntries(60000, 13);
-    ASSERT_GT(pm::compress(pm::encodeDirectory(entries), c).value().size(), pm::kRootLimitBytes);
-    auto d = pm::buildDirectories(entries, c);
-    ASSERT_TRUE(d.ok());
-    EXPECT_LE(d.value().root.size() + pm::kHeaderBytes, 16384u);
-    EXPECT_GT(d.value().leafCount, 1u);
-    const auto root = pm::decodeDirectory(pm::decompress(d.value().root, c).value());
-    for (const pm::Entry& e : root.value())
+    ASSERT_GT(strahler::test_support::valueOf(pm::compress(pm::encodeDirectory(entries), c)).size(),
+              pm::kRootLimitBytes);
+    STRAHLER_ASSIGN_OR_ASSERT(auto d, pm::buildDirectories(entries, c));
+    EXPECT_LE(d.root.size() + pm::kHeaderBytes, 16384u);
+    EXPECT_GT(d.leafCount, 1u);
+    STRAHLER_ASSIGN_OR_ASSERT(const auto root, pm::decodeDirectory(strahler::test_support::valueOf(
+                                                   pm::decompress(d.root, c))));
+    for (const pm::Entry& e : root)
       EXPECT_EQ(e.runLength, 0u) << "the root holds only leaf pointers";
-    EXPECT_EQ(flatten(d.value(), c), entries);
+    EXPECT_EQ(flatten(d, c), entries);
   }
 }
 

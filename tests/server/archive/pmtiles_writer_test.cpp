@@ -2,6 +2,7 @@
 // identical tiles, leaf directories for big archives, no file but the archive left behind.
 #include "hilbert_tile_id.h"
 #include "pmtiles_writer.h"
+#include "result_matchers.h"
 
 #include <gtest/gtest.h>
 
@@ -51,16 +52,17 @@ ArchiveMetadata metadata() {
 std::vector<pm::Entry> entriesOf(const std::string& file, const pm::Header& h) {
   const auto c = h.internalCompression;
   std::vector<pm::Entry> out;
-  const auto root =
-      pm::decodeDirectory(pm::decompress(file.substr(h.rootOffset, h.rootLength), c).value());
-  for (const pm::Entry& e : root.value()) {
+  const auto root = strahler::test_support::valueOf(pm::decodeDirectory(
+      strahler::test_support::valueOf(pm::decompress(file.substr(h.rootOffset, h.rootLength), c))));
+  for (const pm::Entry& e : root) {
     if (e.runLength > 0) {
       out.push_back(e);
       continue;
     }
-    const auto leaf = pm::decodeDirectory(
-        pm::decompress(file.substr(h.leafOffset + e.offset, e.length), c).value());
-    out.insert(out.end(), leaf.value().begin(), leaf.value().end());
+    const auto leaf =
+        strahler::test_support::valueOf(pm::decodeDirectory(strahler::test_support::valueOf(
+            pm::decompress(file.substr(h.leafOffset + e.offset, e.length), c))));
+    out.insert(out.end(), leaf.begin(), leaf.end());
   }
   return out;
 }
@@ -68,23 +70,22 @@ std::vector<pm::Entry> entriesOf(const std::string& file, const pm::Header& h) {
 TEST(PmtilesWriter, StoresIdenticalTilesOnceWithRunLengths) {
   const fs::path dir = scratch("dedup");
   const fs::path path = dir / "a.pmtiles";
-  auto writer = PmtilesWriter::create(path.string());
-  ASSERT_TRUE(writer.ok()) << writer.error().message;
+  STRAHLER_ASSIGN_OR_ASSERT(auto writer, PmtilesWriter::create(path.string()));
   // Ids 0..20 (zooms 0-2): "sea" everywhere but ids 3 and 9, which are land.
   for (std::uint64_t id = 0; id <= 20; ++id) {
     const std::string bytes = id == 3 ? "land-3" : id == 9 ? "land-9" : "sea";
-    ASSERT_TRUE(writer.value()->addTile(tileIdToZxy(id), bytes).ok());
+    STRAHLER_ASSERT_OK(writer->addTile(tileIdToZxy(id), bytes));
   }
-  EXPECT_FALSE(writer.value()->addTile(tileIdToZxy(20), "again").ok()) << "ids must ascend";
-  ASSERT_TRUE(writer.value()->finish(metadata()).ok());
-  EXPECT_EQ(writer.value()->stats().tiles, 21u);
-  EXPECT_EQ(writer.value()->stats().uniqueTiles, 3u);
-  writer.value().reset();
+  EXPECT_FALSE(writer->addTile(tileIdToZxy(20), "again").ok()) << "ids must ascend";
+  STRAHLER_ASSERT_OK(writer->finish(metadata()));
+  EXPECT_EQ(writer->stats().tiles, 21u);
+  EXPECT_EQ(writer->stats().uniqueTiles, 3u);
+  writer.reset();
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1)
       << "the spool file is gone";
 
   const std::string file = readAll(path);
-  const pm::Header h = pm::decodeHeader(file).value();
+  STRAHLER_ASSIGN_OR_ASSERT(const pm::Header h, pm::decodeHeader(file));
   EXPECT_EQ(h.addressedTiles, 21u);
   EXPECT_EQ(h.tileContents, 3u);
   EXPECT_EQ(h.tileEntries, 5u); // sea ×3, land-3, sea ×5, land-9, sea ×11
@@ -106,24 +107,22 @@ TEST(PmtilesWriter, StoresIdenticalTilesOnceWithRunLengths) {
   EXPECT_EQ(entries[2].runLength, 5u);
   EXPECT_EQ(entries[2].offset, entries[0].offset);
   EXPECT_EQ(file.substr(h.tileDataOffset + entries[3].offset, entries[3].length), "land-9");
-  const std::string meta =
-      pm::decompress(file.substr(h.metadataOffset, h.metadataLength), h.internalCompression)
-          .value();
+  STRAHLER_ASSIGN_OR_ASSERT(
+      const std::string meta,
+      pm::decompress(file.substr(h.metadataOffset, h.metadataLength), h.internalCompression));
   EXPECT_NE(meta.find("\"encoding\":\"mapbox\""), std::string::npos) << meta;
 }
 
 TEST(PmtilesWriter, WritesLeafDirectoriesForManyTiles) {
   const fs::path path = scratch("leaves") / "big.pmtiles";
-  auto writer = PmtilesWriter::create(path.string());
-  ASSERT_TRUE(writer.ok());
+  STRAHLER_ASSIGN_OR_ASSERT(auto writer, PmtilesWriter::create(path.string()));
   // 40,000 distinct small tiles at zoom 9 (every other id): far more than a 16 KiB root holds.
   const std::uint64_t first = zxyToTileId({9, 0, 0});
   for (std::uint64_t k = 0; k < 40000; ++k)
-    ASSERT_TRUE(
-        writer.value()->addTile(tileIdToZxy(first + 2 * k), "tile " + std::to_string(k)).ok());
-  ASSERT_TRUE(writer.value()->finish(metadata()).ok());
+    ASSERT_TRUE(writer->addTile(tileIdToZxy(first + 2 * k), "tile " + std::to_string(k)).ok());
+  STRAHLER_ASSERT_OK(writer->finish(metadata()));
   const std::string file = readAll(path);
-  const pm::Header h = pm::decodeHeader(file).value();
+  STRAHLER_ASSIGN_OR_ASSERT(const pm::Header h, pm::decodeHeader(file));
   EXPECT_LE(h.rootOffset + h.rootLength, 16384u);
   EXPECT_GT(h.leafLength, 0u);
   const auto entries = entriesOf(file, h);

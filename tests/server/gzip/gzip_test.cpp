@@ -1,5 +1,6 @@
 // gzip::compress and gzip::decompress; zlib's own inflate reads what compress writes.
 #include "gzip.h"
+#include "result_matchers.h"
 
 #include <gtest/gtest.h>
 
@@ -43,12 +44,12 @@ TEST(Gzip, CompressWritesAGzipMemberZlibInflatesBack) {
     EXPECT_LT(packed.size(), text.size() / 3);
     EXPECT_EQ(packed.substr(0, 2), std::string("\x1f\x8b", 2)) << "gzip magic";
     EXPECT_EQ(zlibInflate(packed), text);
-    EXPECT_EQ(decompress(packed, text.size()).value(), text);
+    EXPECT_EQ(test_support::valueOf(decompress(packed, text.size())), text);
     EXPECT_EQ(compress(text, level), packed) << "the same bytes every time";
   }
   EXPECT_LE(compress(text, Level::kSmallest).size(), compress(text, Level::kFastest).size());
   EXPECT_FALSE(compress("", Level::kFastest).empty()) << "an empty text is still a gzip member";
-  EXPECT_EQ(decompress(compress("", Level::kFastest), 0).value(), "");
+  EXPECT_EQ(test_support::valueOf(decompress(compress("", Level::kFastest), 0)), "");
 }
 
 TEST(Gzip, DecompressRefusesDamagedTruncatedTrailingAndOversizedInput) {

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-namespace strahler::service::testing {
+namespace strahler::service::test_support {
 
 /// A tile of `size` bytes of `fill` (capacity `size` too), with empty MIME type and ETag.
 inline std::shared_ptr<const CachedTile> makeTile(std::size_t size, char fill = 't') {
@@ -99,4 +99,4 @@ private:
   std::vector<TileCache::Outcome> outcomes_;
 };
 
-} // namespace strahler::service::testing
+} // namespace strahler::service::test_support

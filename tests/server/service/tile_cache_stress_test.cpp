@@ -40,7 +40,7 @@ struct StressTally {
 };
 
 TEST(TileCacheStress, EveryRequestIsAnsweredExactlyOnceWithinTheByteBound) {
-  testing::Watchdog watchdog("tile cache stress", std::chrono::seconds(60));
+  test_support::Watchdog watchdog("tile cache stress", std::chrono::seconds(60));
   TileCache cache(kCacheBytes);
   StressTally tally;
   {

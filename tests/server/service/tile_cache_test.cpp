@@ -15,13 +15,13 @@
 namespace strahler::service {
 namespace {
 
-using testing::computeReturning;
-using testing::entryCharge;
-using testing::makeTile;
-using testing::ManualScheduler;
-using testing::OutcomeLog;
-using testing::runInline;
-using testing::Watchdog;
+using test_support::computeReturning;
+using test_support::entryCharge;
+using test_support::makeTile;
+using test_support::ManualScheduler;
+using test_support::OutcomeLog;
+using test_support::runInline;
+using test_support::Watchdog;
 
 /// Fetches `key` (computed inline as a tile of `size` bytes); returns the delivered tile.
 std::shared_ptr<const CachedTile> fetch(TileCache& cache, const std::string& key,
@@ -334,8 +334,12 @@ TEST(TileCache, QueuedWorkWhoseRequestersAllLeftIsNotComputed) {
   EXPECT_EQ(stats.cancelled, 1u);
   EXPECT_EQ(stats.computations, 1u);
   EXPECT_EQ(stats.inFlight, 0u);
-  EXPECT_EQ(fetch(cache, "gone", 10, &calls), fetch(cache, "gone", 10, &calls))
-      << "a cancelled key is computed for the next request";
+  const int callsBefore = calls;
+  const auto again = fetch(cache, "gone", 10, &calls);
+  ASSERT_NE(again, nullptr) << "a cancelled key is computed for the next request";
+  EXPECT_EQ(calls, callsBefore + 1);
+  EXPECT_EQ(fetch(cache, "gone", 10, &calls), again) << "and then served from the cache";
+  EXPECT_EQ(calls, callsBefore + 1);
 }
 
 TEST(TileCache, WorkDroppedByADestroyedPoolAnswersRetryLater) {

@@ -8,7 +8,7 @@
 #include <string>
 #include <thread>
 
-namespace strahler::service::testing {
+namespace strahler::service::test_support {
 
 /// Bounds the time of a concurrency test: aborts the process with a message when the scope
 /// is not left within `limit`, so that a deadlock fails fast instead of hanging the suite.
@@ -45,4 +45,4 @@ private:
   std::thread thread_;
 };
 
-} // namespace strahler::service::testing
+} // namespace strahler::service::test_support

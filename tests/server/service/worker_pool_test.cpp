@@ -15,7 +15,7 @@
 namespace strahler::service {
 namespace {
 
-using testing::Watchdog;
+using test_support::Watchdog;
 
 /// Drains `pool` on another thread while a task waits on `release`: drain must not return
 /// before the release, which this function gives after a pause.

@@ -22,3 +22,14 @@ export function pixelAt(pngBytes, x, y) {
   const i = 4 * (Math.round(y) * width + Math.round(x));
   return [data[i], data[i + 1], data[i + 2]];
 }
+
+/** The share of pixels of two same-sized PNGs whose colour differs by more than `tolerance` in a channel. */
+export function changedShare(pngA, pngB, tolerance = 8) {
+  const a = PNG.sync.read(pngA), b = PNG.sync.read(pngB);
+  if (a.width !== b.width || a.height !== b.height) throw new Error(`${a.width}×${a.height} vs ${b.width}×${b.height}`);
+  let changed = 0;
+  for (let i = 0; i < a.data.length; i += 4) {
+    if ([0, 1, 2].some((k) => Math.abs(a.data[i + k] - b.data[i + k]) > tolerance)) ++changed;
+  }
+  return changed / (a.width * a.height);
+}

@@ -3,6 +3,7 @@
 #include "strahler/base/assert.h"
 
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 
@@ -76,24 +77,39 @@ inline Error makeError(ErrorCode code, std::string message) {
   return Error{code, std::move(message)};
 }
 
+/// `error` with `context` and ": " before its message (the code is kept), so an error passed
+/// up through a caller also says what the caller was doing; unchanged without a context.
+inline Error withContext(Error error) {
+  return error;
+}
+inline Error withContext(Error error, std::string_view context) {
+  error.message.insert(0, std::string(context) + ": ");
+  return error;
+}
+
 } // namespace strahler::base
 
 #define STRAHLER_CONCAT_INNER(a, b) a##b
 #define STRAHLER_CONCAT(a, b) STRAHLER_CONCAT_INNER(a, b)
 
-/// Returns the error of `expr` (a Result) from the enclosing function, if any.
-#define STRAHLER_RETURN_IF_ERROR(expr)                                                             \
+/// Returns the error of `expr` (a Result) from the enclosing function, if any. An optional
+/// third argument, a string evaluated only on an error, is put before its message
+/// (base::withContext): STRAHLER_RETURN_IF_ERROR(write(path), "saving " + path).
+#define STRAHLER_RETURN_IF_ERROR(expr, ...)                                                        \
   do {                                                                                             \
     auto&& strahler_status_ = (expr);                                                              \
     if (!strahler_status_.ok())                                                                    \
-      return std::move(strahler_status_).error();                                                  \
+      return ::strahler::base::withContext(                                                        \
+          std::move(strahler_status_).error() __VA_OPT__(, ) __VA_ARGS__);                         \
   } while (false)
 
-/// Declares `lhs` from the value of `expr` (a Result), or returns its error.
-#define STRAHLER_ASSIGN_OR_RETURN(lhs, expr)                                                       \
-  STRAHLER_ASSIGN_OR_RETURN_IMPL(STRAHLER_CONCAT(strahler_result_, __LINE__), lhs, expr)
-#define STRAHLER_ASSIGN_OR_RETURN_IMPL(tmp, lhs, expr)                                             \
+/// Declares `lhs` from the value of `expr` (a Result), or returns its error, with an optional
+/// context before its message as above: STRAHLER_ASSIGN_OR_RETURN(auto w, read(p), "world " + p).
+#define STRAHLER_ASSIGN_OR_RETURN(lhs, expr, ...)                                                  \
+  STRAHLER_ASSIGN_OR_RETURN_IMPL(STRAHLER_CONCAT(strahler_result_, __LINE__), lhs,                 \
+                                 expr __VA_OPT__(, ) __VA_ARGS__)
+#define STRAHLER_ASSIGN_OR_RETURN_IMPL(tmp, lhs, expr, ...)                                        \
   auto tmp = (expr);                                                                               \
   if (!tmp.ok())                                                                                   \
-    return std::move(tmp).error();                                                                 \
+    return ::strahler::base::withContext(std::move(tmp).error() __VA_OPT__(, ) __VA_ARGS__);       \
   lhs = std::move(tmp).value()

@@ -30,7 +30,8 @@ template <class Tag> struct StrongId {
 using NodeId = StrongId<struct NodeTag>;
 /// A Voronoi block (one per river node).
 using BlockId = StrongId<struct BlockTag>;
-/// A terrain or river primitive.
+/// A terrain or river primitive: an index into WorldData::terrain or WorldData::rivers, as
+/// the function taking it says.
 using PrimitiveId = StrongId<struct PrimitiveTag>;
 
 } // namespace strahler::base

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "strahler/base/strong_id.h"
 #include "strahler/construction/operators.h"
 #include "strahler/construction/world_data.h"
 #include "strahler/geometry/grid_index.h"
@@ -51,17 +52,18 @@ public:
 
   /// The vector description.
   const WorldData& data() const noexcept { return data_; }
-  /// Bounding box of river primitive i's support.
-  const geometry::Aabb& riverSupport(std::uint32_t i) const noexcept {
-    return hotRivers_[i].support;
+  /// Bounding box of river primitive i's support (i indexes data().rivers).
+  const geometry::Aabb& riverSupport(base::PrimitiveId i) const noexcept {
+    return hotRivers_[i.index()].support;
   }
   /// Boxes of the runs of 8 segments of river primitive i's curve.
-  std::span<const geometry::Aabb> riverChunks(std::uint32_t i) const noexcept {
-    return {chunkBoxes_.data() + hotRivers_[i].chunkBegin, hotRivers_[i].chunkCount};
+  std::span<const geometry::Aabb> riverChunks(base::PrimitiveId i) const noexcept {
+    const HotRiver& r = hotRivers_[i.index()];
+    return {chunkBoxes_.data() + r.chunkBegin, r.chunkCount};
   }
   /// How near (m) a run of river primitive i's curve must come to a point to shape it: the
   /// river's radius with a margin for rounding (extra runs are harmless, missing ones not).
-  double riverReach(std::uint32_t i) const noexcept;
+  double riverReach(base::PrimitiveId i) const noexcept;
   /// How far (m) in y a terrain primitive's centre may lie from a point it shapes: the
   /// largest radius with a margin above rounding (a primitive farther adds exactly nothing).
   double terrainReach() const noexcept { return terrainReach_; }
@@ -74,8 +76,8 @@ public:
     std::uint32_t endChunk = 0;
   };
   /// River primitive i with every run of its curve.
-  RiverCandidate wholeRiver(std::uint32_t i) const noexcept {
-    return {i, 0, hotRivers_[i].chunkCount};
+  RiverCandidate wholeRiver(base::PrimitiveId i) const noexcept {
+    return {i.value, 0, hotRivers_[i.index()].chunkCount};
   }
   /// The land with fast point and distance queries.
   const geometry::PolygonIndex& land() const noexcept { return land_; }
@@ -244,7 +246,8 @@ private:
 };
 
 // The instruction set evaluation runs on lives in strahler/simd/instruction_set.h; these names
-// stay for code that still says construction:: (core/tiling/src/tile_evaluator.cpp).
+// stay for code that still says construction:: (core/tiling: tile_evaluator.cpp, bins.h,
+// bins_test.cpp).
 using simd::InstructionSet;
 using simd::instructionSet;
 using simd::useInstructionSet;

@@ -94,8 +94,9 @@ struct Params {
 
   // --- Drainage below the river graph's scale (issue 25; experimental) ---
   /// Levels of procedural tributaries carved at evaluation time (400, 200, 100 m cells), in
-  /// [0, 3]; 0 (the default) carves none. Left out of the canonical JSON when 0, so worlds
-  /// without it keep their cache keys. Costly: tiles are evaluated tens of times slower.
+  /// [0, 3]; 0 (the default) carves none. Not 0 also lets every river wander at two scales.
+  /// Left out of the canonical JSON when 0, so worlds without it keep their cache keys.
+  /// Costly: a tile takes about 13 times the CPU (docs/performance.md).
   int tributaryLevels = 0;
 
   std::uint64_t seed = 1; ///< Seed of every random choice; JSON: an integer, or a decimal string.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "strahler/base/strong_id.h"
 #include "strahler/construction/world_data.h"
 #include "strahler/geometry/aabb.h"
 
@@ -20,9 +21,9 @@ public:
   BlockIndex& operator=(BlockIndex&&) noexcept;
 
   /// Blocks whose influence box meets `box`, in ascending order.
-  std::vector<std::uint32_t> blocksMeeting(const geometry::Aabb& box) const;
+  std::vector<base::BlockId> blocksMeeting(const geometry::Aabb& box) const;
   /// Influence box of one block (empty when the block has no primitive).
-  const geometry::Aabb& influence(std::uint32_t block) const { return influence_[block]; }
+  const geometry::Aabb& influence(base::BlockId block) const { return influence_[block.index()]; }
 
 private:
   struct Tree;

@@ -5,7 +5,6 @@
 #include "strahler/tiling/candidate_filters.h"
 #include "strahler/tiling/tile_scheme.h"
 
-#include <optional>
 #include <vector>
 
 namespace strahler::tiling {
@@ -35,16 +34,6 @@ public:
   const BlockIndex& blocks() const noexcept { return blocks_; }
 
 private:
-  /// What the points of `box` share about the shore; the candidate segments it names are
-  /// appended to `segments` (the returned span points into it once filling is done, so it is
-  /// given as offsets: begin and count).
-  struct BinShore {
-    construction::World::Coast coast = construction::World::Coast::kUnknown;
-    std::optional<bool> onLand;
-    std::size_t begin = 0, count = 0; ///< candidate segments: segments[begin, begin + count)
-  };
-  BinShore shoreOf(const geometry::Aabb& box, std::vector<std::uint32_t>& segments) const;
-
   const construction::World& world_;
   BlockIndex blocks_;
   TerrainDiscs terrainDiscs_; // per terrain primitive
