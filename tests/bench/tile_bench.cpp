@@ -62,17 +62,17 @@ void BM_TileRestricted(benchmark::State& state) {
 /// 1 AVX2), for machines without AVX-512; skipped where the CPU lacks it.
 void BM_TileRestrictedOn(benchmark::State& state) {
   const Fixture& f = fixture();
-  const construction::InstructionSet saved = construction::instructionSet();
-  const auto set = state.range(1) == 0 ? construction::InstructionSet::kBaseline
-                                       : construction::InstructionSet::kAvx2;
-  if (!construction::useInstructionSet(set)) {
+  const simd::InstructionSet saved = simd::instructionSet();
+  const auto set =
+      state.range(1) == 0 ? simd::InstructionSet::kBaseline : simd::InstructionSet::kAvx2;
+  if (!simd::useInstructionSet(set)) {
     state.SkipWithError("the CPU lacks this instruction set");
     return;
   }
   const tiling::SampleGrid grid = f.web.rasterGrid(tileAt(static_cast<int>(state.range(0))), 256);
   for (auto _ : state)
     benchmark::DoNotOptimize(f.evaluator.evaluate(grid));
-  construction::useInstructionSet(saved);
+  simd::useInstructionSet(saved);
   state.counters["samples/s"] = benchmark::Counter(static_cast<double>(grid.points.size()),
                                                    benchmark::Counter::kIsIterationInvariantRate);
 }
@@ -157,9 +157,8 @@ void BM_TileFixedCount(benchmark::State& state) {
   if (const char* set = std::getenv("STRAHLER_BENCH_SET")) {
     const std::string name(set);
     const bool known = name == "avx2" || name == "sse2";
-    if (!known || !construction::useInstructionSet(name == "avx2"
-                                                       ? construction::InstructionSet::kAvx2
-                                                       : construction::InstructionSet::kBaseline)) {
+    if (!known || !simd::useInstructionSet(name == "avx2" ? simd::InstructionSet::kAvx2
+                                                          : simd::InstructionSet::kBaseline)) {
       state.SkipWithError("STRAHLER_BENCH_SET: avx2 or sse2, and one this CPU has");
       return;
     }

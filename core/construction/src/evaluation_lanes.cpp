@@ -1,11 +1,11 @@
 #include "evaluation_lanes.h"
 
-#include "strahler/base/lanes.h"
+#include "strahler/simd/instruction_set.h"
+#include "strahler/simd/lane_ops.h"
+#include "strahler/simd/lanes.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <immintrin.h>
 #include <limits>
 #include <type_traits>
 
@@ -16,9 +16,15 @@ namespace strahler::construction {
 namespace detail {
 namespace {
 
+using simd::InstructionSet;
+
+// Without x86 intrinsics (STRAHLER_SIMD_X86 0), the baseline builds alone, with the portable
+// operations: the same bits.
 namespace baseline { // SSE2, every x86-64: two doubles per register
 #define STRAHLER_KERNEL_WIDTH 2
+#if STRAHLER_SIMD_X86
 #define STRAHLER_KERNEL_MASK_SSE2
+#endif
 #include "evaluation_kernels.inc"
 #undef STRAHLER_KERNEL_MASK_SSE2
 #undef STRAHLER_KERNEL_WIDTH
@@ -33,6 +39,7 @@ namespace baselineNoise {
 #undef STRAHLER_KERNEL_WIDTH
 } // namespace baselineNoise
 
+#if STRAHLER_SIMD_X86
 #pragma GCC push_options
 #pragma GCC target("avx2")
 namespace avx2 { // four doubles per register
@@ -56,36 +63,13 @@ namespace avx512 { // eight doubles per register
 #undef STRAHLER_KERNEL_WIDTH
 } // namespace avx512
 #pragma GCC pop_options
-
-bool supported(InstructionSet set) noexcept {
-  switch (set) {
-  case InstructionSet::kAvx512:
-    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq");
-  case InstructionSet::kAvx2:
-    return __builtin_cpu_supports("avx2");
-  case InstructionSet::kBaseline:
-    return true;
-  }
-  return false;
-}
-
-InstructionSet widest() noexcept {
-  for (InstructionSet set : {InstructionSet::kAvx512, InstructionSet::kAvx2})
-    if (supported(set))
-      return set;
-  return InstructionSet::kBaseline;
-}
-
-std::atomic<InstructionSet>& current() noexcept {
-  static std::atomic<InstructionSet> set{widest()};
-  return set;
-}
+#endif // STRAHLER_SIMD_X86
 
 /// Runs the build of a kernel for the instruction set in use.
 template <class R, class Args>
 R runBuild(R (*base)(const Args&) noexcept, R (*withAvx2)(const Args&) noexcept,
            R (*withAvx512)(const Args&) noexcept, const Args& args) noexcept {
-  switch (current().load(std::memory_order_relaxed)) {
+  switch (simd::instructionSet()) {
   case InstructionSet::kAvx512:
     return withAvx512(args);
   case InstructionSet::kAvx2:
@@ -95,6 +79,11 @@ R runBuild(R (*base)(const Args&) noexcept, R (*withAvx2)(const Args&) noexcept,
   }
   return base(args);
 }
+#if !STRAHLER_SIMD_X86
+/// The portable build's only kernels (simd::instructionSet() is then always kBaseline).
+namespace avx2 = baseline;
+namespace avx512 = baseline;
+#endif
 
 } // namespace
 
@@ -142,16 +131,5 @@ void insideLanes(const InsideLaneArgs& args) noexcept {
 }
 
 } // namespace detail
-
-InstructionSet instructionSet() noexcept {
-  return detail::current().load(std::memory_order_relaxed);
-}
-
-bool useInstructionSet(InstructionSet set) noexcept {
-  if (!detail::supported(set))
-    return false;
-  detail::current().store(set, std::memory_order_relaxed);
-  return true;
-}
 
 } // namespace strahler::construction

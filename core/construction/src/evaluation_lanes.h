@@ -1,8 +1,8 @@
 #pragma once
 
-#include "strahler/base/lanes.h"
 #include "strahler/construction/world.h"
 #include "strahler/primitives/river_primitives.h"
+#include "strahler/simd/lanes.h"
 
 #include <array>
 #include <cstdint>
@@ -18,9 +18,9 @@ struct OctaveFades {
   std::array<double, NoiseOctaves::kOctaves> fade{};
 };
 
-/// Points of one call of the terrain blend at most: two groups of base::kLanes (two runs of
+/// Points of one call of the terrain blend at most: two groups of simd::kLanes (two runs of
 /// samples that share their candidates).
-inline constexpr std::size_t kTerrainLanes = 2 * base::kLanes;
+inline constexpr std::size_t kTerrainLanes = 2 * simd::kLanes;
 
 /// The weighted sums of the terrain blend, kTerrainLanes each.
 struct TerrainSums {
@@ -37,7 +37,7 @@ struct TerrainSums {
   alignas(64) double planeY[kTerrainLanes];       ///< Σ w_i s_i.y
 };
 
-/// One call of the terrain blend: `groups` groups (1 or 2) of base::kLanes points, group g at
+/// One call of the terrain blend: `groups` groups (1 or 2) of simd::kLanes points, group g at
 /// points[g], with their shared candidates; results go to h and w, groups · kLanes each,
 /// group after group.
 struct TerrainLaneArgs {
@@ -62,7 +62,7 @@ void terrainPoint(const TerrainLaneArgs& args) noexcept;
 /// Segments of a river curve per chunk box (World keeps one box per run of kChunk segments).
 inline constexpr std::size_t kChunk = 8;
 
-/// The rivers' union U(R…) at base::kLanes points (riversLanes) or one (riversPoint): for each
+/// The rivers' union U(R…) at simd::kLanes points (riversLanes) or one (riversPoint): for each
 /// candidate in turn, the closest point of its curve to each point (points outside its support
 /// box are not searched, nor runs of the curve before firstChunk or from endChunk on; ties keep
 /// the first segment) and, within its radius, its profile's sample (primitives::riverProfile,
@@ -88,7 +88,7 @@ void riversLanes(const RiverLaneArgs& args) noexcept;
 /// riversLanes().
 void riversPoint(const RiverLaneArgs& args) noexcept;
 
-/// The coast shaping at base::kLanes points (World's CoastShape): from the terrain blend
+/// The coast shaping at simd::kLanes points (World's CoastShape): from the terrain blend
 /// (h, w), the rivers' union (riverH, riverW), whether each point is on land (onLand: 1 or 0)
 /// and its squared distance to the shore (shore2, capped by the caller at the reach of its
 /// side or beyond), the final heights.
@@ -111,7 +111,7 @@ double coastPoint(Sample terrain, Sample rivers, bool onLand, double shore) noex
 /// coastPoint() at sea beyond the shelf's reach, its depth computed once: the same bits.
 double farSeaPoint(Sample rivers) noexcept;
 
-/// One nearest-segment search for base::kLanes points over the segments `ids` of
+/// One nearest-segment search for simd::kLanes points over the segments `ids` of
 /// `segments`: best2[l] becomes the least of itself and each segment's squared distance, as
 /// geometry::closestPointOnSegment and lengthSquared compute it.
 struct SegmentLaneArgs {
@@ -124,7 +124,7 @@ struct SegmentLaneArgs {
 /// The nearest-segment search compiled for the instruction set in use (same bits on each).
 void nearestSegmentLanes(const SegmentLaneArgs& args) noexcept;
 
-/// Point in land for base::kLanes points that share one ray band of the land's index
+/// Point in land for simd::kLanes points that share one ray band of the land's index
 /// (geometry::PolygonIndex::rayBand): onLand[l] becomes 1 where point l lies within `bounds`
 /// and an odd number of the band's segments `ids` cross its ray, else 0; the decisions of
 /// PolygonIndex::contains, made by the same operations.

@@ -3,10 +3,10 @@
 #include "evaluation_lanes.h"
 #include "tributaries.h"
 
-#include "strahler/base/lanes.h"
 #include "strahler/base/random.h"
 #include "strahler/geometry/distance.h"
 #include "strahler/primitives/river_primitives.h"
+#include "strahler/simd/lanes.h"
 
 #include <algorithm>
 #include <array>
@@ -302,7 +302,7 @@ void World::riversLanes(std::size_t lanes, const Vec2* points, double spacing,
 }
 
 void World::insideLand(const Vec2* group, double* onLand) const noexcept {
-  constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
+  constexpr auto kLanes = static_cast<std::size_t>(simd::kLanes);
   // A run of a tile's row shares its points' ray band (nearly one y); otherwise, or outside
   // the land's box (whose bands are clamped), point by point.
   const geometry::Aabb& bounds = land_.bounds();
@@ -362,7 +362,7 @@ World::Evaluation World::evaluateFrom(Vec2 p, double spacing,
 
 void World::heights(std::span<const Vec2> points, double spacing,
                     std::span<double> out) const noexcept {
-  constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
+  constexpr auto kLanes = static_cast<std::size_t>(simd::kLanes);
   for (std::size_t begin = 0; begin < points.size(); begin += kLanes) {
     const std::span<const Vec2> group =
         points.subspan(begin, std::min(kLanes, points.size() - begin));
@@ -385,7 +385,7 @@ void World::heightsFrom(std::span<const Vec2> points, double spacing,
                         std::span<const std::uint32_t> terrain,
                         std::span<const RiverCandidate> rivers, const Shore& shore,
                         std::span<double> heights) const noexcept {
-  constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
+  constexpr auto kLanes = static_cast<std::size_t>(simd::kLanes);
   std::array<double, kLanes> h, w;
   std::array<Vec2, kLanes> padded;
   for (std::size_t begin = 0; begin < points.size(); begin += kLanes) {
@@ -403,7 +403,7 @@ void World::heightsFrom(std::span<const Vec2> points, double spacing,
 
 void World::heightsFrom(const PointRun& first, const PointRun& second,
                         std::span<const std::uint32_t> terrain, const Shore& shore) const noexcept {
-  constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
+  constexpr auto kLanes = static_cast<std::size_t>(simd::kLanes);
   if (first.points.size() != kLanes || second.points.size() != kLanes) {
     heightsFrom(first.points, first.spacing, terrain, first.rivers, shore, first.heights);
     heightsFrom(second.points, second.spacing, terrain, second.rivers, shore, second.heights);
@@ -421,7 +421,7 @@ void World::heightsFrom(const PointRun& first, const PointRun& second,
 void World::finishGroup(const Vec2* group, double spacing, const double* h, const double* w,
                         std::span<const RiverCandidate> rivers, const Shore& shore,
                         std::span<double> heights) const noexcept {
-  constexpr auto kLanes = static_cast<std::size_t>(base::kLanes);
+  constexpr auto kLanes = static_cast<std::size_t>(simd::kLanes);
   // Arrays of doubles, not of Samples: GCC zeroes an array of Samples (their members have
   // initialisers) by `rep stos`, which cost more than the river search at most zooms.
   std::array<double, kLanes> riverH, riverW;

@@ -1,7 +1,6 @@
 #include "result_matchers.h"
 #include "test_worlds.h"
 
-#include "strahler/base/lanes.h"
 #include "strahler/base/random.h"
 #include "strahler/construction/world.h"
 #include "strahler/construction/world_builder.h"
@@ -12,6 +11,7 @@
 #include "strahler/quality/river_agreement.h"
 #include "strahler/quality/river_profile.h"
 #include "strahler/quality/world_raster.h"
+#include "strahler/simd/lanes.h"
 
 #include <gtest/gtest.h>
 
@@ -203,7 +203,7 @@ TEST(World, PairedRunsEqualSingleHeights) {
   std::vector<World::RiverCandidate> rivers;
   for (std::uint32_t i = 0; i < world.data().rivers.size(); ++i)
     rivers.push_back(world.wholeRiver(base::PrimitiveId(i)));
-  constexpr std::size_t kRun = base::kLanes;
+  constexpr std::size_t kRun = simd::kLanes;
   for (int pair = 0; pair < 40; ++pair) {
     std::vector<Vec2> first, second;
     for (std::size_t l = 0; l < kRun; ++l) {

@@ -13,7 +13,7 @@
 namespace strahler::noise {
 namespace {
 
-using base::kLanes;
+using simd::kLanes;
 
 /// The hash's multiplication as the AVX-512 kernels do it (vpmuludq): the product of each
 /// lane's low 32 bits, here with other bits set above them, which atLanes() must not keep.
@@ -27,7 +27,7 @@ struct LowWordTimes {
 /// with a Times other than LatticeNoise::Multiply, given the floors and multiplying by Times.
 template <int W, bool kWideHash = false, class Times = LatticeNoise::Multiply>
 std::array<double, kLanes> lanes(const LatticeNoise& n, const double* xs, const double* ys) {
-  using D = typename base::Vectors<W>::Doubles;
+  using D = typename simd::Vectors<W>::Doubles;
   std::array<double, kLanes> out;
   for (int first = 0; first < kLanes; first += W) {
     D x, y;

@@ -10,19 +10,19 @@
 namespace strahler::tiling {
 namespace {
 
-using construction::InstructionSet;
 using geometry::Aabb;
 using geometry::Vec2;
+using simd::InstructionSet;
 
 /// The instruction sets this CPU has.
 std::vector<InstructionSet> availableSets() {
   std::vector<InstructionSet> sets;
-  const InstructionSet saved = construction::instructionSet();
+  const InstructionSet saved = simd::instructionSet();
   for (const InstructionSet set :
        {InstructionSet::kBaseline, InstructionSet::kAvx2, InstructionSet::kAvx512})
-    if (construction::useInstructionSet(set))
+    if (simd::useInstructionSet(set))
       sets.push_back(set);
-  construction::useInstructionSet(saved);
+  simd::useInstructionSet(saved);
   return sets;
 }
 

@@ -234,8 +234,8 @@ TEST(TileEvaluator, SameTilesOnAnyThreadCount) {
 
 /// Restores the instruction set a test changed.
 struct InstructionSetGuard {
-  construction::InstructionSet saved = construction::instructionSet();
-  ~InstructionSetGuard() { construction::useInstructionSet(saved); }
+  simd::InstructionSet saved = simd::instructionSet();
+  ~InstructionSetGuard() { simd::useInstructionSet(saved); }
 };
 
 TEST(TileEvaluator, SameBitsOnEveryInstructionSet) {
@@ -247,13 +247,13 @@ TEST(TileEvaluator, SameBitsOnEveryInstructionSet) {
   for (int z : {0, 9, 12, 15, 18})
     grids.push_back(webScheme().rasterGrid(webTileAt(c.x + 0.05, c.y - 0.03, z), 40));
   grids.push_back(localScheme().meshGrid({4, 7, 9}, 20));
-  ASSERT_TRUE(construction::useInstructionSet(construction::InstructionSet::kBaseline));
+  ASSERT_TRUE(simd::useInstructionSet(simd::InstructionSet::kBaseline));
   std::vector<std::vector<double>> baseline;
   for (const SampleGrid& g : grids)
     baseline.push_back(evaluator.evaluate(g));
   int compared = 0;
-  for (auto set : {construction::InstructionSet::kAvx2, construction::InstructionSet::kAvx512}) {
-    if (!construction::useInstructionSet(set))
+  for (auto set : {simd::InstructionSet::kAvx2, simd::InstructionSet::kAvx512}) {
+    if (!simd::useInstructionSet(set))
       continue; // this CPU lacks it
     for (std::size_t i = 0; i < grids.size(); ++i) {
       const std::vector<double> heights = evaluator.evaluate(grids[i]);

@@ -6,6 +6,7 @@
 #include "strahler/geometry/grid_index.h"
 #include "strahler/geometry/polygon_index.h"
 #include "strahler/noise/lattice_noise.h"
+#include "strahler/simd/instruction_set.h"
 
 #include <array>
 #include <cstdint>
@@ -244,17 +245,12 @@ private:
   std::shared_ptr<const detail::Tributaries> tributaries_; // drainage below the graph's scale
 };
 
-/// Vector instruction sets the evaluator can run on; every one gives the same bits.
-enum class InstructionSet {
-  kBaseline, ///< SSE2, every x86-64.
-  kAvx2,     ///< 256-bit vectors.
-  kAvx512,   ///< 512-bit vectors (AVX-512F).
-};
-/// The set evaluation uses: the widest this CPU has, unless useInstructionSet() chose another.
-InstructionSet instructionSet() noexcept;
-/// Evaluates with `set` from now on, process-wide, if this CPU has it (for tests and
-/// benchmarks); returns whether it does.
-bool useInstructionSet(InstructionSet set) noexcept;
+// The instruction set evaluation runs on lives in strahler/simd/instruction_set.h; these names
+// stay for code that still says construction:: (core/tiling: tile_evaluator.cpp, bins.h,
+// bins_test.cpp).
+using simd::InstructionSet;
+using simd::instructionSet;
+using simd::useInstructionSet;
 
 /// Fade of a noise octave of wavelength `wavelength` at sample spacing `spacing`: 0 below
 /// twice the spacing, 1 from four times, linear between.

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "strahler/base/lanes.h"
 #include "strahler/geometry/vec2.h"
+#include "strahler/simd/lanes.h"
 
 #include <cmath>
 #include <cstdint>
@@ -12,7 +12,7 @@
 namespace strahler::noise {
 
 /// 2D gradient (Perlin) noise whose lattice gradients come from an arithmetic hash of the
-/// cell and the seed (no permutation table), so that base::kLanes points are evaluated with
+/// cell and the seed (no permutation table), so that simd::kLanes points are evaluated with
 /// vector instructions only (atLanes()). The 16 gradients are unit vectors at multiples of
 /// 22.5 degrees. Output in about [-0.7, 0.7], zero at lattice points, no period.
 /// at() and atLanes() perform the same IEEE operations: lanes equal at() bit for bit.
@@ -32,21 +32,21 @@ public:
   /// Noise at p (lattice units); 0 where |p.x| or |p.y| ≥ kLaneLimit or not finite.
   double at(geometry::Vec2 p) const noexcept;
 
-  /// Noise at base::kLanes points (x[l], y[l]); every lane must satisfy |x|, |y| < kLaneLimit.
-  [[gnu::always_inline]] base::Doubles atLanes(base::Doubles px, base::Doubles py) const noexcept {
-    return atLanes<base::kLanes>(px, py);
+  /// Noise at simd::kLanes points (x[l], y[l]); every lane must satisfy |x|, |y| < kLaneLimit.
+  [[gnu::always_inline]] simd::Doubles atLanes(simd::Doubles px, simd::Doubles py) const noexcept {
+    return atLanes<simd::kLanes>(px, py);
   }
 
-  /// The same at W points held in vectors of W lanes (W = 2, 4, 8: see base::Vectors).
+  /// The same at W points held in vectors of W lanes (W = 2, 4, 8: see simd::Vectors).
   /// kWideHash: the lattice hash in 64-bit lanes, each holding its 32-bit value (the same
   /// bits), for AVX-512 builds: GCC 12 widens eight 32-bit hashes to 64-bit gradient indices
   /// in two halves (four instructions per corner), and 64-bit lanes need no widening.
   template <int W, bool kWideHash = false>
-  [[gnu::always_inline]] typename base::Vectors<W>::Doubles
-  atLanes(typename base::Vectors<W>::Doubles px,
-          typename base::Vectors<W>::Doubles py) const noexcept {
-    using Doubles = typename base::Vectors<W>::Doubles;
-    using Int32s = typename base::Vectors<W>::Int32s;
+  [[gnu::always_inline]] typename simd::Vectors<W>::Doubles
+  atLanes(typename simd::Vectors<W>::Doubles px,
+          typename simd::Vectors<W>::Doubles py) const noexcept {
+    using Doubles = typename simd::Vectors<W>::Doubles;
+    using Int32s = typename simd::Vectors<W>::Int32s;
     // floor by truncation then correction (exact below kLaneLimit).
     const Doubles tx = __builtin_convertvector(__builtin_convertvector(px, Int32s), Doubles);
     const Doubles ty = __builtin_convertvector(__builtin_convertvector(py, Int32s), Doubles);
@@ -65,14 +65,14 @@ public:
   /// multiply the low 32 bits of each lane alone (one instruction where 64-bit products take
   /// three); it must not be marked always_inline (it is inlined once this template is).
   template <int W, bool kWideHash, class Times = Multiply>
-  [[gnu::always_inline]] typename base::Vectors<W>::Doubles
-  atLanes(typename base::Vectors<W>::Doubles px, typename base::Vectors<W>::Doubles py,
-          typename base::Vectors<W>::Doubles fx, typename base::Vectors<W>::Doubles fy,
+  [[gnu::always_inline]] typename simd::Vectors<W>::Doubles
+  atLanes(typename simd::Vectors<W>::Doubles px, typename simd::Vectors<W>::Doubles py,
+          typename simd::Vectors<W>::Doubles fx, typename simd::Vectors<W>::Doubles fy,
           Times&& times = {}) const noexcept {
-    using Doubles = typename base::Vectors<W>::Doubles;
-    using Int32s = typename base::Vectors<W>::Int32s;
-    using Words = typename base::Vectors<W>::Words;
-    using UInt64s = typename base::Vectors<W>::UInt64s;
+    using Doubles = typename simd::Vectors<W>::Doubles;
+    using Int32s = typename simd::Vectors<W>::Int32s;
+    using Words = typename simd::Vectors<W>::Words;
+    using UInt64s = typename simd::Vectors<W>::UInt64s;
     const auto dot = [this](auto h, Doubles dx, Doubles dy) __attribute__((always_inline)) {
       return dotGradient<W>(h, dx, dy);
     };
@@ -81,7 +81,7 @@ public:
       const auto wrap = [low](UInt64s h) __attribute__((always_inline)) {
         return h & low;
       };
-      using Int64s = typename base::Vectors<W>::Int64s;
+      using Int64s = typename simd::Vectors<W>::Int64s;
       const auto cx = reinterpret_cast<UInt64s>(__builtin_convertvector(fx, Int64s));
       const auto cy = reinterpret_cast<UInt64s>(__builtin_convertvector(fy, Int64s));
       return cellNoise(cx, cy, px - fx, py - fy, dot, wrap, times);
@@ -96,8 +96,8 @@ public:
 private:
   /// 16 doubles, as 8 vectors of 2 and 2 of 8.
   struct Table {
-    base::Vectors<2>::Doubles by2[8];
-    base::Vectors<8>::Doubles by8[2];
+    simd::Vectors<2>::Doubles by2[8];
+    simd::Vectors<8>::Doubles by8[2];
   };
   /// Final mix of a cell's hash (one xor-shift-multiply round), 32 bits whose top 4
   /// (h >> 28) pick the gradient. `wrap` keeps 32 bits (the identity on 32-bit words): a
@@ -137,11 +137,11 @@ private:
   /// dotted with (x, y): a lookup in the table of 16 gradients held as vectors of W lanes, 2W
   /// entries per two-vector shuffle.
   template <int W, class H>
-  [[gnu::always_inline]] typename base::Vectors<W>::Doubles
-  dotGradient(H h, typename base::Vectors<W>::Doubles x,
-              typename base::Vectors<W>::Doubles y) const noexcept {
-    using Doubles = typename base::Vectors<W>::Doubles;
-    using Int64s = typename base::Vectors<W>::Int64s;
+  [[gnu::always_inline]] typename simd::Vectors<W>::Doubles
+  dotGradient(H h, typename simd::Vectors<W>::Doubles x,
+              typename simd::Vectors<W>::Doubles y) const noexcept {
+    using Doubles = typename simd::Vectors<W>::Doubles;
+    using Int64s = typename simd::Vectors<W>::Int64s;
     if constexpr (W == 4) {
       static_assert(sizeof(h[0]) == 4, "four lanes hash in 32-bit words");
       // Gradient k is gradient k & 3 of the first quadrant, (p, s), turned by k >> 2 quarter
@@ -150,8 +150,8 @@ private:
       // lookups in four-entry tables are cheaper here than one in sixteen. k's bits (q1 q0 r1
       // r0) are read where they lie: each hash is moved to the top of a 64-bit lane (widened by
       // a shuffle with zeros: one instruction, then a shift), so q1 is the sign bit.
-      using UInt64s = typename base::Vectors<W>::UInt64s;
-      using Words8 = base::Vectors<8>::Words;
+      using UInt64s = typename simd::Vectors<W>::UInt64s;
+      using Words8 = simd::Vectors<8>::Words;
       constexpr std::uint64_t kSign = std::uint64_t{1} << 63;
       const UInt64s top =
           reinterpret_cast<UInt64s>(__builtin_shufflevector(h, H{}, 0, 4, 1, 4, 2, 4, 3, 4)) << 32;
@@ -191,7 +191,7 @@ private:
   }
   /// A table of 16 doubles as vectors of W lanes (W = 2 or 8; four lanes use the quadrant).
   template <int W>
-  static const typename base::Vectors<W>::Doubles* gradients(const Table& table) noexcept {
+  static const typename simd::Vectors<W>::Doubles* gradients(const Table& table) noexcept {
     static_assert(W == 2 || W == 8);
     if constexpr (W == 2)
       return table.by2;
@@ -203,7 +203,7 @@ private:
   // The x and the y components of the 16 gradients, as vectors of each width.
   Table gradientX_{}, gradientY_{};
   // The first quadrant's four gradients (cos, sin of 0°, 22.5°, 45°, 67.5°).
-  base::Vectors<4>::Doubles quadrantCos_{}, quadrantSin_{};
+  simd::Vectors<4>::Doubles quadrantCos_{}, quadrantSin_{};
 };
 
 } // namespace strahler::noise

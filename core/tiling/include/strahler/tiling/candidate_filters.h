@@ -1,9 +1,9 @@
 #pragma once
 
-#include "strahler/base/lanes.h"
-#include "strahler/construction/world.h"
 #include "strahler/geometry/aabb.h"
 #include "strahler/primitives/terrain_primitive.h"
+#include "strahler/simd/filters.h"
+#include "strahler/simd/instruction_set.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -13,18 +13,18 @@
 namespace strahler::tiling {
 
 // Filters of candidate lists for tile binning: each keeps, in order, the candidates that pass
-// a test, with vector instructions of `set` where it has a kernel for them (AVX2, AVX-512),
-// else scalar code without a branch per candidate; every set keeps the same candidates. `set`
-// must be one this CPU has.
+// a test, by simd's filters (strahler/simd/filters.h: vector instructions of `set` where it
+// has a kernel for them, else portable code); every set keeps the same candidates. `set` must
+// be one this CPU has.
 
 /// Entries a filter may write past the last one it keeps (vector stores write whole vectors).
-inline constexpr std::size_t kFilterOverrun = 16;
+inline constexpr std::size_t kFilterOverrun = simd::kFilterOverrun;
 
 /// Copies, in order, each ids[k] whose keys[k] lies in [low, high] to `out` and returns how
 /// many it kept. `out` must have room for keys.size() + kFilterOverrun ids.
 std::size_t keepKeysWithin(std::span<const float> keys, const std::uint32_t* ids, float low,
                            float high, std::uint32_t* out,
-                           construction::InstructionSet set = construction::instructionSet());
+                           simd::InstructionSet set = simd::instructionSet());
 
 /// Terrain primitives' discs in columns (index: primitive id), as binning reads them: centre,
 /// squared radius with a relative slack of 1e-9 (extra candidates are harmless: w = 0 beyond
@@ -44,19 +44,13 @@ struct TerrainDiscs {
 /// `ids` and `keys` must have room for count + kFilterOverrun entries.
 std::size_t keepDiscsMeeting(const TerrainDiscs& discs, std::uint32_t first, std::size_t count,
                              const geometry::Aabb& box, std::uint32_t* ids, float* keys,
-                             construction::InstructionSet set = construction::instructionSet());
+                             simd::InstructionSet set = simd::instructionSet());
 
 /// How far p lies outside box b along x and along y: each the larger of b.min − p and
 /// p − b.max, at least 0 (infinite for an empty box).
 inline geometry::Vec2 gapsToBox(geometry::Vec2 p, const geometry::Aabb& b) noexcept {
-  // In a vector of two lanes: GCC compiles a scalar maximum with 0 to a branch, which tests of
-  // many boxes mispredict about every other time.
-  using Pair = base::Vectors<2>::Doubles;
-  const Pair point{p.x, p.y};
-  const Pair below = Pair{b.min.x, b.min.y} - point, above = point - Pair{b.max.x, b.max.y};
-  const Pair gap = below > above ? below : above;
-  const Pair positive = gap > 0.0 ? gap : Pair{};
-  return {positive[0], positive[1]};
+  const auto gap = simd::gapsToBox(p.x, p.y, {b.min.x, b.min.y, b.max.x, b.max.y});
+  return {gap[0], gap[1]};
 }
 /// The squared distance from p to box b: the gaps squared and added.
 inline double squaredDistanceToBox(geometry::Vec2 p, const geometry::Aabb& b) noexcept {
