@@ -170,8 +170,8 @@ bool Tributaries::nearestCoarser(const TributarySource& world, int level, Vec2 p
           out.position = q;
           out.downstream = geometry::normalize(ab);
           out.elevation = c.water[k] + (c.water[k + 1] - c.water[k]) * t;
-          out.fall = length2 > 0.0 ? std::max(0.0, c.water[k] - c.water[k + 1]) / std::sqrt(length2)
-                                   : 0.0;
+          out.fall =
+              length2 > 0.0 ? std::max(0.0, c.water[k] - c.water[k + 1]) / std::sqrt(length2) : 0.0;
           out.distance = d;
         }
       }

@@ -15,7 +15,7 @@ struct ChannelPoint {
   geometry::Vec2 position;   ///< on the channel
   geometry::Vec2 downstream; ///< unit direction of the flow there
   double elevation = 0.0;    ///< water elevation there, m
-  double fall = 0.0;      ///< how much the water falls per metre downstream there, >= 0
+  double fall = 0.0;         ///< how much the water falls per metre downstream there, >= 0
   double distance = 0.0;     ///< from the point asked about, m
 };
 

@@ -135,23 +135,23 @@ Meander meanderFor(RiverType type, double width, base::Rng& rng) {
   return m;
 }
 
-/// Offsets the points sideways by the meander, fading to zero at both ends so that
-/// sections still meet exactly at the nodes.
-void perturb(std::vector<Vec2>& points, const Meander& m) {
+/// Offsets the points sideways by the meander, fading to zero at both ends (over `ramp`
+/// wavelengths, at most half the section) so that sections still meet exactly at the nodes.
+void perturb(std::vector<Vec2>& points, const Meander& m, double ramp = 0.5) {
   if (m.amplitude == 0.0 || points.size() < 3)
     return;
   std::vector<double> s{0.0};
   for (std::size_t i = 1; i < points.size(); ++i)
     s.push_back(s.back() + distance(points[i - 1], points[i]));
   const double total = s.back();
-  const double ramp = std::min(0.5 * m.wavelength, 0.5 * total);
+  const double fadeLength = std::min(ramp * m.wavelength, 0.5 * total);
   std::vector<Vec2> out = points;
   for (std::size_t i = 1; i + 1 < points.size(); ++i) {
     const Vec2 tangent = points[i + 1] - points[i - 1];
     if (lengthSquared(tangent) == 0.0)
       continue;
     const Vec2 normal = perpendicular(normalize(tangent));
-    const double fade = std::min({1.0, s[i] / ramp, (total - s[i]) / ramp});
+    const double fade = std::min({1.0, s[i] / fadeLength, (total - s[i]) / fadeLength});
     const double t = 2.0 * kPi * s[i] / m.wavelength + m.phase;
     const double offset = m.amplitude * std::sin(t) + m.secondAmplitude * std::sin(2.7 * t + 1.3);
     out[i] = points[i] + normal * (offset * fade * fade * (3.0 - 2.0 * fade));
@@ -205,10 +205,12 @@ RiverPrimitive buildSection(const input::Params& params, const network::RiverNet
     base::Rng wanderRng(params.seed, base::mixHash(kWanderStream, id.value));
     Meander wander;
     wander.wavelength = wanderRng.uniform(450.0, 900.0);
-    wander.amplitude = wander.wavelength * wanderRng.uniform(0.06, 0.14);
+    wander.amplitude = wander.wavelength * wanderRng.uniform(0.05, 0.11);
     wander.phase = wanderRng.uniform(0.0, 2.0 * kPi);
-    wander.secondAmplitude = wander.wavelength * wanderRng.uniform(0.02, 0.06);
-    perturb(points, wander);
+    wander.secondAmplitude = wander.wavelength * wanderRng.uniform(0.02, 0.05);
+    // Faded over a whole wavelength: near a confluence a section runs inside its parent's
+    // valley, and pushed across the parent's floor its bed would dip and rise again.
+    perturb(points, wander, 1.0);
   }
   keepClearOfShore(points, node.position, net.node(node.parent).position, land,
                    kShoreClearance * params.delta);

@@ -5,6 +5,7 @@
 #include "strahler/construction/world_builder.h"
 #include "strahler/geometry/distance.h"
 #include "strahler/quality/drainage.h"
+#include "strahler/quality/river_profile.h"
 #include "strahler/quality/world_raster.h"
 
 #include <gtest/gtest.h>
@@ -126,15 +127,24 @@ TEST(Tributaries, TheCarvedLandStillDrains) {
       << carved.pits << " pits, largest " << carved.largestUndrainedAreaKm2 << " km²";
 }
 
+/// The default island generated with tributaries (its rivers wander).
+const WorldData& wanderingIslandData() {
+  static const WorldData data = [] {
+    input::WorldSpec spec = test_support::defaultIslandSpec();
+    spec.params.tributaryLevels = 3;
+    auto generated = generateWorldData(spec, "test");
+    EXPECT_TRUE(generated.ok()) << generated.error().message;
+    return std::move(generated).value();
+  }();
+  return data;
+}
+
 TEST(Tributaries, RiversWanderUnderThem) {
   // With tributaries the graph's rivers wander at two scales, straight (B) ones too; without,
   // a B river keeps close to its edge. Ends (the nodes) stay where they were.
-  input::WorldSpec spec = test_support::defaultIslandSpec();
-  spec.params.tributaryLevels = 3;
-  auto wandering = generateWorldData(spec, "test");
-  ASSERT_TRUE(wandering.ok()) << wandering.error().message;
+  const WorldData& wandering = wanderingIslandData();
   const WorldData& plain = islandData();
-  ASSERT_EQ(wandering.value().rivers.size(), plain.rivers.size());
+  ASSERT_EQ(wandering.rivers.size(), plain.rivers.size());
   const auto offset = [](const primitives::RiverPrimitive& r) {
     const Vec2 a = r.curve.front().position, b = r.curve.back().position;
     double most = 0.0;
@@ -146,7 +156,7 @@ TEST(Tributaries, RiversWanderUnderThem) {
   std::size_t straight = 0;
   for (std::size_t i = 0; i < plain.rivers.size(); ++i) {
     const primitives::RiverPrimitive& before = plain.rivers[i];
-    const primitives::RiverPrimitive& after = wandering.value().rivers[i];
+    const primitives::RiverPrimitive& after = wandering.rivers[i];
     ASSERT_EQ(before.curve.front().position, after.curve.front().position);
     ASSERT_EQ(before.curve.back().position, after.curve.back().position);
     if (before.type != primitives::RiverType::kStraight || before.curve.size() < 10)
@@ -159,6 +169,18 @@ TEST(Tributaries, RiversWanderUnderThem) {
   const double plainMean = plainSum / double(straight);
   const double wanderingMean = wanderingSum / double(straight);
   EXPECT_GT(wanderingMean, plainMean + 20.0) << plainMean << " m against " << wanderingMean << " m";
+}
+
+TEST(Tributaries, RiversNeverRiseDownstream) {
+  // Neither the wandering curves (faded over a wavelength at the nodes, so a section does not
+  // cross its parent's floor) nor the tributaries' valleys (never below the water beside
+  // their parent) make a river's bed rise downstream.
+  const World world(wanderingIslandData());
+  const quality::RiverProfileReport report = quality::checkRiversDescend(
+      quality::riverCentrelines(world), [&](Vec2 p) { return world.height(p, 1.0); }, 5.0, 0.5);
+  EXPECT_GT(report.samples, 10000u);
+  EXPECT_EQ(report.violations, 0u) << "worst rise " << report.worstRise << " m at "
+                                   << report.worstAt.x << ", " << report.worstAt.y;
 }
 
 } // namespace
