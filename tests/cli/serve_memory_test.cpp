@@ -107,8 +107,17 @@ TEST(ServeCommand, ResidentMemoryStaysWithinTheCacheBound) {
   // A burst of large tiles (~20 MB of temporaries each) that the cache cannot keep many of:
   // what the allocator keeps afterwards is given back within a second (MemoryTrimmer).
   EXPECT_EQ(requestLargeLandTiles(port, 24), 0);
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
-  const long afterBurst = residentMb(pid);
+  // The trimmer gives freed heap back at most once a second after tiles were computed; on a
+  // loaded machine (the suite runs two tests at once) its pass can come late, so wait for it
+  // up to 6 s rather than a fixed 1.5 s. Memory the server keeps is not given back at all, so
+  // it still fails the bound.
+  long afterBurst = 0;
+  for (int wait = 0; wait < 24; ++wait) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    afterBurst = residentMb(pid);
+    if (wait >= 5 && afterBurst - warm <= kCacheMb + kRssSlackMb)
+      break;
+  }
   const auto metrics = strahler::http::test::fetch(
       port, strahler::http::test::getRequest("/metrics"), std::chrono::seconds(10));
   ::kill(pid, SIGTERM);
@@ -120,7 +129,7 @@ TEST(ServeCommand, ResidentMemoryStaysWithinTheCacheBound) {
       << "RSS " << warm << " MB after warming up, " << filled << " MB after 4,000 tiles";
   EXPECT_LE(afterBurst - warm, kCacheMb + kRssSlackMb)
       << "RSS " << warm << " MB after warming up, " << afterBurst
-      << " MB 1.5 s after 24 tiles of 1024²";
+      << " MB up to 6 s after 24 tiles of 1024²";
   ASSERT_TRUE(metrics);
   EXPECT_NE(metrics->body.find("strahler_tile_cache_evictions_total"), std::string::npos);
   EXPECT_EQ(metrics->body.find("strahler_tile_cache_evictions_total 0."), std::string::npos)
