@@ -11,7 +11,8 @@ namespace strahler::service {
 
 /// Hands the heap memory glibc malloc keeps after bursts of tile computations back to the
 /// system (malloc_trim): a thread wakes once per `period` and trims when noteActivity() was
-/// called since its last trim. Tile temporaries (a 1024² tile needs ~20 MB) otherwise stay in
+/// called since its last wake, and once more at the wake after (what was freed after the last
+/// activity was noted). Tile temporaries (a 1024² tile needs ~20 MB) otherwise stay in
 /// the arenas: +90 MB of RSS after 64 such tiles, measured in docs/performance.md. At most one
 /// trim per period, so its cost (milliseconds) never follows the request rate. Thread-safe.
 class MemoryTrimmer {
