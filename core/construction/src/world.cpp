@@ -251,6 +251,13 @@ double World::carveTributaries(Vec2 p, double h, double spacing) const {
   return tributaries_->carve(detail::WorldTributarySource(*this), p, h, spacing);
 }
 
+void World::carveGroup(const Vec2* group, double spacing, std::span<double> heights) const {
+  if (!tributaries_) // the default: one test per group, no call per sample
+    return;
+  for (std::size_t l = 0; l < heights.size(); ++l)
+    heights[l] = carveTributaries(group[l], heights[l], spacing);
+}
+
 double World::riverReach(base::PrimitiveId i) const noexcept {
   return hotRivers_[i.index()].reach;
 }
@@ -429,15 +436,14 @@ void World::finishGroup(const Vec2* group, double spacing, const double* h, cons
   const std::size_t n = heights.size();
   if (shore.coast == Coast::kInland) { // shapeCoast()'s inland case, without a call per sample
     for (std::size_t l = 0; l < n; ++l)
-      heights[l] =
-          carveTributaries(group[l], replace({h[l], w[l]}, {riverH[l], riverW[l]}).h, spacing);
+      heights[l] = replace({h[l], w[l]}, {riverH[l], riverW[l]}).h;
+    carveGroup(group, spacing, heights);
     return;
   }
   if (shore.coast != Coast::kUnknown || !shore.segments) { // far at sea, or unknown
     for (std::size_t l = 0; l < n; ++l)
-      heights[l] = carveTributaries(
-          group[l], shapeCoast(group[l], {h[l], w[l]}, {riverH[l], riverW[l]}, shore.coast),
-          spacing);
+      heights[l] = shapeCoast(group[l], {h[l], w[l]}, {riverH[l], riverW[l]}, shore.coast);
+    carveGroup(group, spacing, heights);
     return;
   }
   std::array<double, kLanes> onLand, shore2, out;
@@ -451,8 +457,8 @@ void World::finishGroup(const Vec2* group, double spacing, const double* h, cons
     insideLand(group, onLand.data());
   detail::coastLanes(
       {h, w, riverH.data(), riverW.data(), onLand.data(), shore2.data(), out.data()});
-  for (std::size_t l = 0; l < n; ++l)
-    heights[l] = carveTributaries(group[l], out[l], spacing);
+  std::copy_n(out.begin(), n, heights.begin());
+  carveGroup(group, spacing, heights);
 }
 
 } // namespace strahler::construction

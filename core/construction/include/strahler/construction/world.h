@@ -196,6 +196,8 @@ private:
   double uncarvedHeight(geometry::Vec2 p, double spacing) const noexcept;
   /// The height `h` at p with the tributaries' valleys carved (p on land, h > 0).
   double carveTributaries(geometry::Vec2 p, double h, double spacing) const;
+  /// carveTributaries() over a group's heights, in place (nothing without tributaries).
+  void carveGroup(const geometry::Vec2* group, double spacing, std::span<double> heights) const;
   /// B(T…) at `lanes` points into h, w: 1 (scalar code, at first[0]) or base::kLanes (vector
   /// code) at `first` and, if not null, base::kLanes more at `second` (their results follow
   /// the first's), samples spacing[0] and spacing[1] apart; the same bits either way.
