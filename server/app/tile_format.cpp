@@ -17,9 +17,11 @@ base::Result<TileFormat> parseTileFormat(const std::string& name) {
     return TileFormat::kDraco;
   if (name == "glb")
     return TileFormat::kGlb;
+  if (name == "relief")
+    return TileFormat::kRelief;
   return base::makeError(base::ErrorCode::kInvalidInput,
                          "unknown tile format '" + name +
-                             "' (use png, terrarium, png16, tif, exr, drc or glb)");
+                             "' (use png, terrarium, png16, tif, exr, drc, glb or relief)");
 }
 
 const char* canonicalFormatName(TileFormat format) noexcept {
@@ -38,11 +40,15 @@ const char* canonicalFormatName(TileFormat format) noexcept {
     return "drc";
   case TileFormat::kGlb:
     return "glb";
+  case TileFormat::kRelief:
+    return "relief";
   }
   return "png";
 }
 
 TileKind tileKind(TileFormat format) noexcept {
+  if (format == TileFormat::kRelief)
+    return TileKind::kRelief;
   return format == TileFormat::kDraco || format == TileFormat::kGlb ? TileKind::kMesh
                                                                     : TileKind::kHeightmap;
 }

@@ -9,13 +9,14 @@
 namespace strahler::app {
 
 /// Every tile format strahler serves.
-enum class TileFormat { kTerrainRgb, kTerrarium, kPng16, kTiff, kExr, kDraco, kGlb };
+enum class TileFormat { kTerrainRgb, kTerrarium, kPng16, kTiff, kExr, kDraco, kGlb, kRelief };
 
 /// The kind of data a tile carries; each kind has one renderer (tile_renderer.h), and a
 /// format is one encoding of one kind.
 enum class TileKind {
   kHeightmap, ///< A raster of heights (png, terrarium, png16, tif, exr).
   kMesh,      ///< A triangle mesh with skirts (drc, glb).
+  kRelief,    ///< A colour-relief picture: hypsometric tint × hillshade (relief).
 };
 
 /// Size bounds: raster tiles have size² pixels, mesh tiles size² quads ((size+1)² vertices).
@@ -32,10 +33,10 @@ struct TileSizeRange {
 };
 
 /// Parses a format name as used in URLs and on the command line: png (Terrain-RGB),
-/// terrarium, png16, tif, exr, drc, glb.
+/// terrarium, png16, tif, exr, drc, glb, relief (colour relief).
 base::Result<TileFormat> parseTileFormat(const std::string& name);
 
-/// The name of `format` in URLs (png, terrarium, png16, tif, exr, drc, glb).
+/// The name of `format` in URLs (png, terrarium, png16, tif, exr, drc, glb, relief).
 const char* canonicalFormatName(TileFormat format) noexcept;
 
 /// The kind of tile `format` encodes.

@@ -2,6 +2,7 @@
 
 #include "heightmap_renderer.h"
 #include "mesh_renderer.h"
+#include "relief_renderer.h"
 
 #include <string>
 
@@ -26,6 +27,7 @@ TileService::TileService(construction::WorldData world)
   renderers_[static_cast<std::size_t>(TileKind::kHeightmap)] =
       std::make_unique<HeightmapRenderer>();
   renderers_[static_cast<std::size_t>(TileKind::kMesh)] = std::make_unique<MeshRenderer>();
+  renderers_[static_cast<std::size_t>(TileKind::kRelief)] = std::make_unique<ReliefRenderer>();
 }
 
 TileService::~TileService() = default;

@@ -50,7 +50,7 @@ private:
   tiling::TileScheme web_;
   tiling::TileScheme local_;
   /// The renderer of each TileKind, by its value.
-  std::array<std::unique_ptr<const TileRenderer>, 2> renderers_;
+  std::array<std::unique_ptr<const TileRenderer>, 3> renderers_;
 };
 
 } // namespace strahler::app
