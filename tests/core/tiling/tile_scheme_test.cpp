@@ -80,7 +80,8 @@ TEST(TileScheme, BorderedRasterGridsHoldTheTileAndItsNeighboursEdgePixels) {
     ASSERT_EQ(b.rowSpacing.size(), static_cast<std::size_t>(w));
     for (int j = 0; j < n; ++j) {
       for (int i = 0; i < n; ++i)
-        ASSERT_TRUE(sameBits(b.points[(j + 1) * w + i + 1], tile.points[j * n + i])) << i << "," << j;
+        ASSERT_TRUE(sameBits(b.points[(j + 1) * w + i + 1], tile.points[j * n + i]))
+            << i << "," << j;
       ASSERT_EQ(b.rowSpacing[j + 1], tile.rowSpacing[j]);
       // The west and east border columns are the neighbours' edge columns.
       ASSERT_TRUE(sameBits(b.points[(j + 1) * w], west.points[j * n + n - 1]));
