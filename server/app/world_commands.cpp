@@ -68,9 +68,10 @@ constexpr const char* kAnalyzeUsage =
 
 constexpr const char* kTileUsage =
     "usage: strahler tile WORLD.world --scheme web|local --z Z --x X --y Y\n"
-    "                     --format png|terrarium|png16|tif|exr|drc|glb [--size N] -o FILE\n"
+    "                     --format png|terrarium|png16|tif|exr|drc|glb|relief [--size N] -o FILE\n"
     "Writes one tile. web: Web Mercator XYZ (zoom 0..18); local: the world's metric\n"
-    "quadtree. png is Terrain-RGB. N: pixels per side for rasters (16..1024, default 256),\n"
+    "quadtree. png is Terrain-RGB; relief an RGB picture (height tint x hillshade).\n"
+    "N: pixels per side for rasters (16..1024, default 256),\n"
     "quads per side for meshes (4..256, default 64).\n";
 
 /// The most raster cells `analyze` evaluates (55 bytes each at its peak on Mallorca at 30 m,
