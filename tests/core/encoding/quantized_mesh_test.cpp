@@ -177,6 +177,14 @@ TEST(QuantizedMesh, ManyVerticesUseAlignedThirtyTwoBitIndices) {
   EXPECT_EQ(e.tile.west.size(), 257u);
 }
 
+TEST(QuantizedMesh, UpToSixtyFourKiVerticesKeepSixteenBitIndices) {
+  const QuantizedMeshGrid grid = gridFrom(roughField(), 0, 0, 1, 257);
+  const Encoded e = encode(grid, withError(2.0));
+  EXPECT_GT(e.tile.vertexCount(), 60000u);
+  EXPECT_LE(e.tile.vertexCount(), 65536u);
+  expectValidMesh(e, grid, 2.0);
+}
+
 TEST(QuantizedMesh, SameInputGivesSameBytes) {
   const QuantizedMeshGrid grid = gridFrom(roughField(), 3, 5, 1, kSamples);
   QuantizedMeshOptions options = withError(4.0);
