@@ -29,7 +29,8 @@ class Triangulator {
 public:
   Triangulator(const Grid& grid, const Limits& limits)
       : grid_(grid), limits_(limits), n_(grid.samples), size_(grid.samples - 1),
-        keep_(static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_), 0) {
+        keep_(static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_), 0),
+        bound_(keep_.size(), 0.0) {
     while ((1 << levels_) < size_)
       ++levels_;
     // Two halvings per power of two; the last level's triangles span one cell.
@@ -56,6 +57,12 @@ public:
   }
 
 private:
+  /// An upper bound of the error of the unsplit triangles whose hypotenuse midpoint is (x, y).
+  double& bound(int x, int y) {
+    return bound_[static_cast<std::size_t>(y) * static_cast<std::size_t>(n_) +
+                  static_cast<std::size_t>(x)];
+  }
+
   unsigned char& keep(int x, int y) {
     return keep_[static_cast<std::size_t>(y) * static_cast<std::size_t>(n_) +
                  static_cast<std::size_t>(x)];
@@ -117,41 +124,82 @@ private:
     if (depth + 1 < splittableDepths_ &&
         (keep((t.ax + t.cx) / 2, (t.ay + t.cy) / 2) || keep((t.bx + t.cx) / 2, (t.by + t.cy) / 2)))
       mid = 1;
-    else if (tooLong(t) || deviation(t, limits_.maxError) > limits_.maxError)
+    else if (tooLong(t) || !withinError(t, depth))
       mid = 1;
+  }
+
+  /// Whether every sample in t lies within maxError of t's plane. The children's errors bound
+  /// t's: on each child t's plane differs from the child's by at most the hypotenuse midpoint's
+  /// distance from t's plane, so the samples are scanned only when that bound is too loose.
+  bool withinError(const Triangle& t, int depth) {
+    const int mx = (t.ax + t.bx) / 2, my = (t.ay + t.by) / 2;
+    const double local = std::fabs(height(mx, my) - 0.5 * (height(t.ax, t.ay) + height(t.bx, t.by)));
+    double childError = 0.0; // the finest splittable triangles' children hold only vertices
+    if (depth + 1 < splittableDepths_)
+      childError = std::max(bound((t.ax + t.cx) / 2, (t.ay + t.cy) / 2),
+                            bound((t.bx + t.cx) / 2, (t.by + t.cy) / 2));
+    double error = childError + local;
+    if (error > limits_.maxError) {
+      error = deviation(t, limits_.maxError);
+      if (error > limits_.maxError)
+        return false;
+    }
+    double& known = bound(mx, my);
+    known = std::max(known, error);
+    return true;
+  }
+
+  /// Calls f(y, low, high) for each row of samples in t: columns low..high. The triangles are
+  /// right isosceles on the grid, so every span is exact without division.
+  template <class F> static void forEachRow(const Triangle& t, F&& f) {
+    if (t.ay == t.by || t.ax == t.bx) {
+      // Hypotenuse along a row or a column; c half its length away.
+      const int mx = (t.ax + t.bx) / 2, my = (t.ay + t.by) / 2;
+      const int half = (std::abs(t.bx - t.ax) + std::abs(t.by - t.ay)) / 2;
+      if (t.ay == t.by) {
+        const int step = t.cy > my ? 1 : -1;
+        for (int k = 0; k <= half; ++k)
+          f(my + step * k, mx - (half - k), mx + (half - k));
+      } else {
+        const bool east = t.cx > mx;
+        for (int y = my - half; y <= my + half; ++y) {
+          const int reach = half - std::abs(y - my);
+          f(y, east ? mx : mx - reach, east ? mx + reach : mx);
+        }
+      }
+      return;
+    }
+    // Legs along a row and a column from c.
+    const int leg = std::max(std::abs(t.ax - t.cx), std::abs(t.ay - t.cy));
+    const bool east = std::max(t.ax, t.bx) > t.cx;
+    const int step = std::max(t.ay, t.by) > t.cy ? 1 : -1;
+    for (int k = 0; k <= leg; ++k) {
+      const int reach = leg - k;
+      f(t.cy + step * k, east ? t.cx : t.cx - reach, east ? t.cx + reach : t.cx);
+    }
   }
 
   /// The largest vertical distance of a sample in t (edges included) from t's plane, or some
   /// value above `stopAbove` as soon as one is found.
   double deviation(const Triangle& t, double stopAbove) const {
     const double ha = height(t.ax, t.ay), hb = height(t.bx, t.by), hc = height(t.cx, t.cy);
-    const double ux = t.bx - t.ax, uy = t.by - t.ay, uh = hb - ha;
-    const double vx = t.cx - t.ax, vy = t.cy - t.ay, vh = hc - ha;
-    const double nz = ux * vy - uy * vx;
-    const double gx = -(uy * vh - uh * vy) / nz; // dh/dx
-    const double gy = -(uh * vx - ux * vh) / nz; // dh/dy
-    // Edge functions of the counter-clockwise order: a sample is inside when all are ≥ 0.
-    const int sign = nz > 0 ? 1 : -1;
-    const int px[3] = {t.ax, t.bx, t.cx}, py[3] = {t.ay, t.by, t.cy};
-    const int x0 = std::min({t.ax, t.bx, t.cx}), x1 = std::max({t.ax, t.bx, t.cx});
-    const int y0 = std::min({t.ay, t.by, t.cy}), y1 = std::max({t.ay, t.by, t.cy});
+    const int ux = t.bx - t.ax, uy = t.by - t.ay, vx = t.cx - t.ax, vy = t.cy - t.ay;
+    const double uh = hb - ha, vh = hc - ha;
+    const int nz = ux * vy - uy * vx;
+    const double gx = (uh * vy - uy * vh) / nz; // dh/dx
+    const double gy = (ux * vh - uh * vx) / nz; // dh/dy
     double worst = 0.0;
-    for (int y = y0; y <= y1; ++y) {
-      for (int x = x0; x <= x1; ++x) {
-        bool inside = true;
-        for (int e = 0; e < 3 && inside; ++e) {
-          const int f = (e + 1) % 3;
-          const int side = (px[f] - px[e]) * (y - py[e]) - (py[f] - py[e]) * (x - px[e]);
-          inside = sign * side >= 0;
-        }
-        if (!inside)
-          continue;
-        const double plane = ha + gx * (x - t.ax) + gy * (y - t.ay);
-        worst = std::max(worst, std::fabs(height(x, y) - plane));
-      }
-      if (worst > stopAbove)
-        return worst;
-    }
+    bool stop = false;
+    forEachRow(t, [&](int y, int low, int high) {
+      if (stop)
+        return;
+      const double rowPlane = ha + gy * (y - t.ay) - gx * t.ax;
+      const double* row =
+          &grid_.heights[static_cast<std::size_t>(y) * static_cast<std::size_t>(n_)];
+      for (int x = low; x <= high; ++x)
+        worst = std::max(worst, std::fabs(row[x] - (rowPlane + gx * x)));
+      stop = worst > stopAbove;
+    });
     return worst;
   }
 
@@ -181,6 +229,7 @@ private:
   int n_;
   int size_;
   std::vector<unsigned char> keep_;
+  std::vector<double> bound_;
   int levels_ = 0;
   int splittableDepths_ = 0;
   bool curvatureApplies_ = true;
