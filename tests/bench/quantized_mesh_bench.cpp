@@ -78,8 +78,18 @@ void BM_EllipsoidTile(benchmark::State& state) {
   options.maxError = cesiumLevelGeometricError(level);
   options.normals = true;
   options.waterMask = {255};
-  for (auto _ : state)
-    benchmark::DoNotOptimize(encodeEllipsoidTile({0.0, 0.0, size, size}, options));
+  const GeographicRect rect{0.0, -90.0, size, -90.0 + size};
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    auto tile = encodeEllipsoidTile(rect, options);
+    if (!tile.ok()) {
+      state.SkipWithError(tile.error().message.c_str());
+      return;
+    }
+    bytes = tile.value().size();
+    benchmark::DoNotOptimize(tile);
+  }
+  state.counters["bytes"] = static_cast<double>(bytes);
 }
 
 BENCHMARK(BM_QuantizedMeshTile)

@@ -21,8 +21,8 @@ namespace strahler::encoding {
 namespace {
 
 using test_support::analyse;
-using test_support::decodeQuantizedMesh;
 using test_support::DecodedTile;
+using test_support::decodeQuantizedMesh;
 using test_support::Field;
 using test_support::gridFrom;
 using test_support::Vec3;
@@ -152,10 +152,14 @@ TEST(QuantizedMesh, EdgeListsHoldExactlyTheGridsEdgeSamples) {
     EXPECT_EQ(sorted, expected) << name;
     EXPECT_EQ(list.size(), static_cast<std::size_t>(kSamples)) << name;
   };
-  expectEdge(e.tile.west, [](int c, int) { return c == 0; }, "west");
-  expectEdge(e.tile.south, [](int, int r) { return r == 0; }, "south");
-  expectEdge(e.tile.east, [last](int c, int) { return c == last; }, "east");
-  expectEdge(e.tile.north, [last](int, int r) { return r == last; }, "north");
+  expectEdge(
+      e.tile.west, [](int c, int) { return c == 0; }, "west");
+  expectEdge(
+      e.tile.south, [](int, int r) { return r == 0; }, "south");
+  expectEdge(
+      e.tile.east, [last](int c, int) { return c == last; }, "east");
+  expectEdge(
+      e.tile.north, [last](int, int r) { return r == last; }, "north");
   for (std::uint32_t k : e.tile.west)
     EXPECT_EQ(e.tile.u[k], 0);
   for (std::uint32_t k : e.tile.north)
@@ -227,9 +231,9 @@ void expectHeaderMatchesGeodesy(const QuantizedMeshGrid& grid, double maxError) 
   EXPECT_LT(t.maximumHeight, high + 1e-3);
 
   const GeographicRect& r = grid.rect;
-  const Vec3 centre = test_support::geodeticToEcef(
-      0.5 * (r.west + r.east), 0.5 * (r.south + r.north),
-      0.5 * (static_cast<double>(t.minimumHeight) + t.maximumHeight));
+  const Vec3 centre =
+      test_support::geodeticToEcef(0.5 * (r.west + r.east), 0.5 * (r.south + r.north),
+                                   0.5 * (static_cast<double>(t.minimumHeight) + t.maximumHeight));
   for (int c = 0; c < 3; ++c)
     EXPECT_NEAR(t.center[c], centre[c], 1e-6);
 
@@ -303,8 +307,10 @@ Vec3 expectedNormal(const QuantizedMeshGrid& grid, int i, int j) {
   const double m = test_support::kA * (1.0 - test_support::kE2) / (w * std::sqrt(w));
   const double dx = 2.0 * (r.east - r.west) / cells * test_support::kRad * n * std::cos(phi);
   const double dy = 2.0 * (r.north - r.south) / cells * test_support::kRad * m;
-  const double gx = (test_support::sampleOf(grid, i + 1, j) - test_support::sampleOf(grid, i - 1, j)) / dx;
-  const double gy = (test_support::sampleOf(grid, i, j + 1) - test_support::sampleOf(grid, i, j - 1)) / dy;
+  const double gx =
+      (test_support::sampleOf(grid, i + 1, j) - test_support::sampleOf(grid, i - 1, j)) / dx;
+  const double gy =
+      (test_support::sampleOf(grid, i, j + 1) - test_support::sampleOf(grid, i, j - 1)) / dy;
   const Vec3 east{-std::sin(lambda), std::cos(lambda), 0.0};
   const Vec3 north{-std::sin(phi) * std::cos(lambda), -std::sin(phi) * std::sin(lambda),
                    std::cos(phi)};
@@ -377,7 +383,7 @@ TEST(QuantizedMesh, OctDecodingRoundTripsUnitVectorsBelowAndAbove) {
 // --- Neighbours ---------------------------------------------------------------------------
 
 struct EdgeVertex {
-  int along;    ///< Quantized position along the edge.
+  int along; ///< Quantized position along the edge.
   double height;
   std::uint8_t octX, octY;
 };
@@ -504,8 +510,8 @@ TEST(QuantizedMesh, EllipsoidTilesAreSeaLevelAndFollowTheCurvature) {
                                     rect.south + t.v[v] / 32767.0 * size);
         };
         const double angle = std::acos(std::clamp(test_support::dot(at(p), at(q)), -1.0, 1.0));
-        const bool oneCell = std::abs(t.u[p] - t.u[q]) <= 2048 + 1 &&
-                             std::abs(t.v[p] - t.v[q]) <= 2048 + 1;
+        const bool oneCell =
+            std::abs(t.u[p] - t.u[q]) <= 2048 + 1 && std::abs(t.v[p] - t.v[q]) <= 2048 + 1;
         EXPECT_TRUE(angle <= limit * 1.01 || oneCell) << "level " << level;
       }
   }
@@ -516,8 +522,8 @@ TEST(QuantizedMesh, MalformedInputIsRejected) {
   const QuantizedMeshOptions options = withError(1.0);
   STRAHLER_ASSERT_OK(encodeQuantizedMesh(good, options));
   const auto rejects = [&](QuantizedMeshGrid grid, QuantizedMeshOptions o, const char* part) {
-    EXPECT_TRUE(strahler::test_support::failsWith(encodeQuantizedMesh(grid, o), base::ErrorCode::kInvalidInput,
-                                        part));
+    EXPECT_TRUE(strahler::test_support::failsWith(encodeQuantizedMesh(grid, o),
+                                                  base::ErrorCode::kInvalidInput, part));
   };
   for (int samples : {0, 2, 16, 18, 2049}) {
     QuantizedMeshGrid grid = good;
@@ -533,6 +539,9 @@ TEST(QuantizedMesh, MalformedInputIsRejected) {
   grid = good;
   grid.heights[3] = std::numeric_limits<double>::infinity();
   rejects(grid, options, "height 3 is not finite");
+  grid = good;
+  grid.heights[7] = -2.0e6;
+  rejects(grid, options, "height 7 is outside [-1e6, 1e6] m");
   grid = good;
   grid.rect.east = grid.rect.west;
   rejects(grid, options, "west must be < east");
@@ -554,7 +563,8 @@ TEST(QuantizedMesh, MalformedInputIsRejected) {
   mask.waterMask.resize(2);
   rejects(good, mask, "water mask must have 0, 1 or 65536 bytes, not 2");
   EXPECT_TRUE(strahler::test_support::failsWith(encodeEllipsoidTile({10, 10, 5, 20}, options),
-                                      base::ErrorCode::kInvalidInput, "west must be < east"));
+                                                base::ErrorCode::kInvalidInput,
+                                                "west must be < east"));
 }
 
 } // namespace
