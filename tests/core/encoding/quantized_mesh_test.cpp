@@ -124,8 +124,17 @@ TEST(QuantizedMesh, RoughTerrainKeepsManySamplesWithinTheError) {
 
 TEST(QuantizedMesh, ConeStaysWithinTheError) {
   const QuantizedMeshGrid grid = gridFrom(coneField(), 0, 0, 1, kSamples);
-  for (double maxError : {0.5, 5.0, 50.0})
+  for (double maxError : {0.5, 5.0, 50.0, std::numeric_limits<double>::infinity()})
     expectValidMesh(encode(grid, withError(maxError)), grid, maxError);
+}
+
+TEST(QuantizedMesh, SmallestAndLargestGridsMesh) {
+  for (int samples : {3, 1025}) {
+    const QuantizedMeshGrid grid = gridFrom(coneField(), -samples / 2, -samples / 2, 1, samples);
+    const Encoded e = encode(grid, withError(2.0));
+    expectValidMesh(e, grid, 2.0);
+    EXPECT_EQ(e.tile.south.size(), static_cast<std::size_t>(samples));
+  }
 }
 
 TEST(QuantizedMesh, ZeroErrorKeepsEverySample) {
