@@ -214,12 +214,12 @@ base::Result<std::string> encodeQuantizedMesh(const QuantizedMeshGrid& grid,
   const rtin::Mesh rtinMesh = rtin::triangulate(
       {n, heights, longitudes, latitudes},
       {options.maxError, std::sqrt(8.0 * options.maxError / wgs84::kSemiMajorAxis)});
-  const OrderedMesh mesh = orderByFirstUse(rtinMesh.triangles, n);
+  OrderedMesh mesh = orderByFirstUse(rtinMesh.triangles, n);
 
   qm::TileData tile;
   tile.rect = grid.rect;
   tile.samples = n;
-  tile.triangles = mesh.triangles;
+  tile.triangles = std::move(mesh.triangles);
   tile.vertices.reserve(mesh.samples.size());
   const std::vector<wgs84::SinCos> lonTrig = sinCosOf(longitudes), latTrig = sinCosOf(latitudes);
   const auto un = static_cast<std::uint32_t>(n);
