@@ -12,6 +12,10 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <random>
 #include <string>
@@ -26,6 +30,7 @@ using test_support::decodeQuantizedMesh;
 using test_support::Field;
 using test_support::gridFrom;
 using test_support::Vec3;
+namespace fs = std::filesystem;
 
 constexpr int kSamples = 65;
 
@@ -574,6 +579,37 @@ TEST(QuantizedMesh, MalformedInputIsRejected) {
   EXPECT_TRUE(strahler::test_support::failsWith(encodeEllipsoidTile({10, 10, 5, 20}, options),
                                                 base::ErrorCode::kInvalidInput,
                                                 "west must be < east"));
+}
+
+// --- Golden tile ----------------------------------------------------------------------------
+// tests/data/golden/quantized_mesh_17.terrain; STRAHLER_UPDATE_GOLDEN=1 rewrites it.
+
+TEST(QuantizedMeshGolden, MatchesTheCommittedTileByteForByte) {
+  // Heights from integer arithmetic only, so the input is the same everywhere.
+  Field field = flatField();
+  field.height = [](int i, int j) {
+    return static_cast<double>(((i + 40) * 7919 + (j + 40) * 104729) % 2003) * 0.25 - 100.0;
+  };
+  QuantizedMeshOptions options = withError(40.0);
+  options.normals = true;
+  options.waterMask = {0};
+  options.metadata = R"({"available":[[{"startX":0,"startY":0,"endX":1,"endY":0}]]})";
+  const std::string bytes =
+      strahler::test_support::valueOf(encodeQuantizedMesh(gridFrom(field, 0, 0, 1, 17), options));
+  const fs::path path = fs::path(STRAHLER_TEST_DATA_DIR) / "golden" / "quantized_mesh_17.terrain";
+  const char* update = std::getenv("STRAHLER_UPDATE_GOLDEN");
+  if (update != nullptr && std::string(update) == "1") {
+    fs::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << bytes;
+    return;
+  }
+  ASSERT_TRUE(fs::exists(path)) << path << " is missing: run with STRAHLER_UPDATE_GOLDEN=1";
+  std::ifstream in(path, std::ios::binary);
+  const std::string committed{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_TRUE(committed == bytes)
+      << path << " differs from today's encoding; if the change is intended, rerun with "
+      << "STRAHLER_UPDATE_GOLDEN=1 and review the new file";
+  EXPECT_NO_THROW(decodeQuantizedMesh(committed));
 }
 
 } // namespace
