@@ -54,6 +54,7 @@ base::Result<WorldData> generateWorldData(const input::WorldSpec& spec, std::str
   data.cacheKey = std::move(cacheKey);
   data.generatorVersion = kGeneratorVersion;
   data.params = spec.params;
+  data.features = spec.features;
   data.projectionCenter = spec.projection.center();
   data.land = quantizeLand(spec.land);
   data.rivers = primitives::generateRiverPrimitives(spec.params, hydrology.network,

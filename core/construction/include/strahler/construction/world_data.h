@@ -2,6 +2,7 @@
 
 #include "strahler/base/stage_timer.h"
 #include "strahler/geometry/polygon.h"
+#include "strahler/input/features.h"
 #include "strahler/input/params.h"
 #include "strahler/network/river_network.h"
 #include "strahler/primitives/river_primitive.h"
@@ -42,6 +43,9 @@ struct WorldData {
   std::vector<primitives::TerrainPrimitive> terrain; ///< Grouped by block.
   std::vector<primitives::RiverPrimitive> rivers;    ///< Grouped by block.
   std::vector<BlockPrimitives> blocks;               ///< One per network node.
+  /// The artist's vector map the world was made from (its folds are evaluated from the
+  /// mountains); empty for most worlds.
+  input::Features features;
 
   std::vector<base::StageTime> stageSeconds; ///< Generation time per stage (not hashed).
 

@@ -4,6 +4,7 @@
 #include "strahler/geometry/polygon.h"
 #include "strahler/geometry/projection.h"
 #include "strahler/image/image.h"
+#include "strahler/input/features.h"
 #include "strahler/input/limits.h"
 #include "strahler/input/params.h"
 #include "strahler/repair/coast_repair.h"
@@ -39,6 +40,7 @@ struct WorldSpec {
   Params params;
   std::vector<UserMouth> mouths;
   std::vector<ConstraintMap> constraints;
+  Features features; ///< The artist's vector map (--features); empty when none.
   /// What --repair changed in the coastline (empty without it, or when nothing needed it).
   /// landLonLat is the repaired coastline, so the cache key follows the repaired geometry.
   std::vector<repair::Change> repairs;
