@@ -77,10 +77,12 @@ bool etagMatches(const std::string& ifNoneMatch, const std::string& etag) {
   return false;
 }
 
-http::Response notModified(const std::string& etag) {
+http::Response notModified(const std::string& etag, const std::string& vary) {
   http::Response r;
   r.status = 304;
   r.headers = {{"ETag", etag}, {"Cache-Control", kTileCacheControl}};
+  if (!vary.empty())
+    r.headers.emplace_back("Vary", vary);
   r.route = "tile";
   return r;
 }

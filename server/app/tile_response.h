@@ -17,8 +17,9 @@ std::string tileEtag(const std::string& worldKey, const std::string& tileKey);
 /// True when an If-None-Match value (a list, or "*") names `etag`.
 bool etagMatches(const std::string& ifNoneMatch, const std::string& etag);
 
-/// The 304 answering a conditional request for the tile of `etag`.
-http::Response notModified(const std::string& etag);
+/// The 304 answering a conditional request for the tile of `etag` (with the Vary of its 200,
+/// `vary`, when not empty).
+http::Response notModified(const std::string& etag, const std::string& vary = {});
 
 /// `tile` as the cache keeps it, with its ETag and the header fields of its 200 response
 /// prepared once, so that every answer from the cache formats and copies nothing. `vary` names

@@ -191,16 +191,16 @@ void TileServer::tile(const ServedWorld& w, const TileRequest& tile, const http:
     return done(std::move(r));
   }
   const std::string key = tileKey(tile);
+  // Cesium terrain's bytes follow the Accept header (its extensions) and Accept-Encoding.
+  const char* vary = tile.kind() == TileKind::kTerrain ? "Accept, Accept-Encoding" : "";
   if (const std::string ifNoneMatch = request.header("if-none-match"); !ifNoneMatch.empty()) {
     const std::string etag = tileEtag(w.cacheKey, key);
     if (etagMatches(ifNoneMatch, etag))
-      return done(notModified(etag));
+      return done(notModified(etag, vary));
   }
   if (auto hit = cache_.find(key))
     return done(tileResponse({std::move(hit), service::TileStatus::kOk, {}}));
   const TileService* service = w.tiles.get();
-  // Cesium terrain's bytes follow the Accept header (its extensions) and Accept-Encoding.
-  const char* vary = tile.kind() == TileKind::kTerrain ? "Accept, Accept-Encoding" : "";
   auto compute = [this, service, tile, vary, etag = tileEtag(w.cacheKey, key)]() {
     auto rendered = service->render(tile);
     trimmer_.noteActivity();

@@ -183,6 +183,7 @@ TEST(CesiumTerrainServer, ExtensionsAndGzipAreNegotiatedAndCachedApart) {
   const HttpResponse again = request(s.port(), t.path() + "?extensions=watermask", "GET",
                                      "If-None-Match: " + native.headers.at("etag") + "\r\n");
   EXPECT_EQ(again.status, 304);
+  EXPECT_EQ(again.headers.at("vary"), "Accept, Accept-Encoding");
 }
 
 // tests/data/golden/island_cesium_12.terrain: the island's centre tile at level 12 with every
