@@ -4,7 +4,7 @@
 // ?world=ID picks the world; ?ellipsoid=1 shows the bare ellipsoid instead (the tests' baseline);
 // ?exaggeration=N scales the heights. Tests drive it through window.strahlerCesium.
 import {
-  BoundingSphere, CesiumTerrainProvider, Color, EllipsoidTerrainProvider, HeadingPitchRange, ImageryLayer,
+  BoundingSphere, Cartesian3, Cartographic, CesiumTerrainProvider, Color, EllipsoidTerrainProvider, HeadingPitchRange, ImageryLayer,
   JulianDate, Math as CesiumMath, Rectangle, UrlTemplateImageryProvider, Viewer,
 } from 'cesium';
 import { loadWorlds, rememberWorld, worldUrl } from './api.js';
@@ -14,7 +14,7 @@ const $ = (id) => document.getElementById(id);
 const params = new URLSearchParams(location.search);
 
 /** The colour-relief raster tiles (Web Mercator XYZ PNG) of a world, as a URL template. */
-export const RELIEF_TILES = 'relief/{z}/{x}/{y}.png';
+export const RELIEF_TILES = 'tiles/{z}/{x}/{y}.relief';
 /** The Cesium terrain of a world: layer.json and {z}/{x}/{y}.terrain below it. */
 export const CESIUM_TERRAIN = 'cesium/';
 
@@ -42,6 +42,15 @@ function flyToWorld(viewer, world) {
   const sphere = BoundingSphere.fromRectangle3D(rectangle);
   viewer.camera.flyToBoundingSphere(sphere, {
     offset: new HeadingPitchRange(0, CesiumMath.toRadians(-40), 2.2 * sphere.radius), duration: 0,
+  });
+}
+
+/** Puts the camera `height` m above the loaded terrain at (lon, lat), looking north 30° down. */
+function lookAt(viewer, lon, lat, height) {
+  const ground = viewer.scene.globe.getHeight(Cartographic.fromDegrees(lon, lat)) ?? 0;
+  viewer.camera.setView({
+    destination: Cartesian3.fromDegrees(lon, lat, Math.max(0, ground) + height),
+    orientation: { heading: 0, pitch: CesiumMath.toRadians(-30), roll: 0 },
   });
 }
 
@@ -84,7 +93,9 @@ async function main() {
   morningSun(viewer, world);
   flyToWorld(viewer, world);
 
-  window.strahlerCesium = { viewer, world, timings, relief: relief !== null };
+  window.strahlerCesium = {
+    viewer, world, timings, relief: relief !== null, lookAt: (lon, lat, height) => lookAt(viewer, lon, lat, height),
+  };
 }
 
 main().catch((error) => {
