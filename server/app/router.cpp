@@ -26,6 +26,10 @@ Route routeOf(const std::vector<std::string>& s) {
     route.endpoint = Endpoint::kRivers;
   else if (s.size() == 6 && (s[2] == "tiles" || s[2] == "local"))
     route.endpoint = Endpoint::kTile;
+  else if (s.size() == 4 && s[2] == "cesium" && s[3] == "layer.json")
+    route.endpoint = Endpoint::kCesiumLayer;
+  else if (s.size() == 6 && s[2] == "cesium")
+    route.endpoint = Endpoint::kCesiumTerrain;
   return route;
 }
 

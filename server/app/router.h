@@ -17,6 +17,8 @@ enum class Endpoint {
   kTileJson,       ///< /worlds/{id}/tilejson.json.
   kRivers,         ///< /worlds/{id}/rivers.geojson.
   kTile,           ///< /worlds/{id}/{tiles|local}/{z}/{x}/{y}.{format} (parseTileRoute).
+  kCesiumLayer,    ///< /worlds/{id}/cesium/layer.json.
+  kCesiumTerrain,  ///< /worlds/{id}/cesium/{z}/{x}/{y}.terrain (parseCesiumTerrainRoute).
   kNoSuchResource, ///< Anything else under /worlds/{id}: 404 once the world is known.
   kStaticFile,     ///< Anything else: a file of the built viewer, or 404.
 };

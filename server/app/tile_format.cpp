@@ -17,9 +17,11 @@ base::Result<TileFormat> parseTileFormat(const std::string& name) {
     return TileFormat::kDraco;
   if (name == "glb")
     return TileFormat::kGlb;
+  if (name == "terrain")
+    return TileFormat::kQuantizedMesh;
   return base::makeError(base::ErrorCode::kInvalidInput,
                          "unknown tile format '" + name +
-                             "' (use png, terrarium, png16, tif, exr, drc or glb)");
+                             "' (use png, terrarium, png16, tif, exr, drc, glb or terrain)");
 }
 
 const char* canonicalFormatName(TileFormat format) noexcept {
@@ -38,11 +40,15 @@ const char* canonicalFormatName(TileFormat format) noexcept {
     return "drc";
   case TileFormat::kGlb:
     return "glb";
+  case TileFormat::kQuantizedMesh:
+    return "terrain";
   }
   return "png";
 }
 
 TileKind tileKind(TileFormat format) noexcept {
+  if (format == TileFormat::kQuantizedMesh)
+    return TileKind::kTerrain;
   return format == TileFormat::kDraco || format == TileFormat::kGlb ? TileKind::kMesh
                                                                     : TileKind::kHeightmap;
 }
@@ -54,6 +60,8 @@ bool isMeshFormat(TileFormat format) noexcept {
 TileSizeRange tileSizeRange(TileKind kind) noexcept {
   if (kind == TileKind::kMesh)
     return {TileSizes::kMeshMin, TileSizes::kMeshMax, TileSizes::kMeshDefault};
+  if (kind == TileKind::kTerrain)
+    return {TileSizes::kTerrainGrid, TileSizes::kTerrainGrid, TileSizes::kTerrainGrid};
   return {TileSizes::kRasterMin, TileSizes::kRasterMax, TileSizes::kRasterDefault};
 }
 

@@ -9,19 +9,31 @@
 namespace strahler::app {
 
 /// Every tile format strahler serves.
-enum class TileFormat { kTerrainRgb, kTerrarium, kPng16, kTiff, kExr, kDraco, kGlb };
+enum class TileFormat {
+  kTerrainRgb,
+  kTerrarium,
+  kPng16,
+  kTiff,
+  kExr,
+  kDraco,
+  kGlb,
+  kQuantizedMesh, ///< Cesium's quantized-mesh-1.0 (.terrain), geographic pyramid only.
+};
 
 /// The kind of data a tile carries; each kind has one renderer (tile_renderer.h), and a
 /// format is one encoding of one kind.
 enum class TileKind {
   kHeightmap, ///< A raster of heights (png, terrarium, png16, tif, exr).
   kMesh,      ///< A triangle mesh with skirts (drc, glb).
+  kTerrain,   ///< A Cesium terrain tile: adaptive mesh, normals, water mask, availability.
 };
 
 /// Size bounds: raster tiles have size² pixels, mesh tiles size² quads ((size+1)² vertices).
 struct TileSizes {
   static constexpr int kRasterMin = 16, kRasterMax = 1024, kRasterDefault = 256;
   static constexpr int kMeshMin = 4, kMeshMax = 256, kMeshDefault = 64;
+  /// Quads per side of the grid a Cesium terrain tile is meshed from (65 samples, Cesium's).
+  static constexpr int kTerrainGrid = 64;
 };
 
 /// The sizes one kind of tile accepts, and the one it gets when none is asked for.
@@ -32,10 +44,10 @@ struct TileSizeRange {
 };
 
 /// Parses a format name as used in URLs and on the command line: png (Terrain-RGB),
-/// terrarium, png16, tif, exr, drc, glb.
+/// terrarium, png16, tif, exr, drc, glb, terrain (quantized-mesh).
 base::Result<TileFormat> parseTileFormat(const std::string& name);
 
-/// The name of `format` in URLs (png, terrarium, png16, tif, exr, drc, glb).
+/// The name of `format` in URLs (png, terrarium, png16, tif, exr, drc, glb, terrain).
 const char* canonicalFormatName(TileFormat format) noexcept;
 
 /// The kind of tile `format` encodes.

@@ -14,11 +14,12 @@ namespace strahler::app {
 
 /// A finished tile with what it cost.
 struct RenderedTile {
-  std::string bytes;       ///< The encoded tile.
-  std::string mimeType;    ///< Its media type (image/png, model/gltf-binary, ...).
-  double evaluateMs = 0.0; ///< Sampling the terrain.
-  double encodeMs = 0.0;   ///< Turning the samples into bytes.
-  tiling::TileStats stats; ///< What the evaluation touched (blocks, primitives).
+  std::string bytes;           ///< The encoded tile.
+  std::string mimeType;        ///< Its media type (image/png, model/gltf-binary, ...).
+  std::string contentEncoding; ///< "gzip" when the bytes are gzipped, else "".
+  double evaluateMs = 0.0;     ///< Sampling the terrain.
+  double encodeMs = 0.0;       ///< Turning the samples into bytes.
+  tiling::TileStats stats;     ///< What the evaluation touched (blocks, primitives).
 };
 
 /// What a renderer reads: the world's terrain evaluator and the pyramid of the request.

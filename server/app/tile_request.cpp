@@ -12,8 +12,18 @@ std::string tileKey(const TileRequest& request) {
     key.append(number, std::to_chars(number, number + sizeof number, v).ptr);
   };
   key.reserve(request.world.size() + 48);
-  key.append(request.world)
-      .append(request.scheme == tiling::SchemeKind::kLocal ? "|local|" : "|tiles|");
+  key.append(request.world);
+  switch (request.scheme) {
+  case tiling::SchemeKind::kLocal:
+    key.append("|local|");
+    break;
+  case tiling::SchemeKind::kGeographic:
+    key.append("|cesium|");
+    break;
+  case tiling::SchemeKind::kWebMercator:
+    key.append("|tiles|");
+    break;
+  }
   append(request.tile.z);
   key.push_back('|');
   append(request.tile.x);
@@ -22,6 +32,11 @@ std::string tileKey(const TileRequest& request) {
   key.push_back('|');
   key.append(canonicalFormatName(request.format)).push_back('|');
   append(request.options.size);
+  if (request.kind() == TileKind::kTerrain) {
+    key.push_back('|');
+    append(request.options.extensions);
+    key.append(request.options.gzip ? "|gz" : "|id");
+  }
   return key;
 }
 

@@ -11,6 +11,17 @@ namespace strahler::app {
 /// What a tile request may tune beyond its format; the same for every transport.
 struct TileOptions {
   int size = 0; ///< Pixels or quads per side; 0: the kind's default (tileSizeRange()).
+  /// Cesium terrain only: the extensions asked for (CesiumExtension bits).
+  unsigned extensions = 0;
+  /// Cesium terrain only: the bytes gzipped (sent as Content-Encoding: gzip).
+  bool gzip = false;
+};
+
+/// The quantized-mesh extensions a Cesium client may ask for, as TileOptions::extensions bits.
+enum CesiumExtension : unsigned {
+  kOctVertexNormals = 1u, ///< "octvertexnormals"
+  kWaterMask = 2u,        ///< "watermask"
+  kMetadata = 4u,         ///< "metadata"
 };
 
 /// One tile to make, whoever asks (a URL, `strahler tile`, `strahler export`): a plain value
@@ -27,7 +38,8 @@ struct TileRequest {
 };
 
 /// The canonical key of `request`: "world|tiles|z|x|y|format|size" ("local" for the local
-/// pyramid, the format's canonical name, size 0 for the default). Requests for the same tile
+/// pyramid, "cesium" for the geographic one, the format's canonical name, size 0 for the
+/// default; Cesium terrain adds "|extensions|gzip"). Requests for the same tile
 /// have the same key as long as their size is 0 whenever it is the default (parseTileRoute
 /// makes it so): the tile's cache key and, with its world's cache key, its ETag.
 std::string tileKey(const TileRequest& request);

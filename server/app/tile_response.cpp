@@ -22,11 +22,17 @@ std::uint64_t fnv1a(std::string_view text, std::uint64_t h = kFnvOffset) {
 
 /// Header fields of a tile's 200 response.
 std::vector<std::pair<std::string, std::string>> tileHeaders(const service::CachedTile& t) {
-  return {{"Content-Type", t.mimeType},
-          {"ETag", t.etag},
-          {"Cache-Control", kTileCacheControl},
-          {"Server-Timing", "eval;dur=" + std::to_string(t.evaluateMs) +
-                                ", encode;dur=" + std::to_string(t.encodeMs)}};
+  std::vector<std::pair<std::string, std::string>> headers = {
+      {"Content-Type", t.mimeType},
+      {"ETag", t.etag},
+      {"Cache-Control", kTileCacheControl},
+      {"Server-Timing",
+       "eval;dur=" + std::to_string(t.evaluateMs) + ", encode;dur=" + std::to_string(t.encodeMs)}};
+  if (!t.contentEncoding.empty())
+    headers.emplace_back("Content-Encoding", t.contentEncoding);
+  if (!t.vary.empty())
+    headers.emplace_back("Vary", t.vary);
+  return headers;
 }
 
 /// The HTTP status of an outcome without a tile.
@@ -79,13 +85,16 @@ http::Response notModified(const std::string& etag) {
   return r;
 }
 
-std::shared_ptr<const service::CachedTile> cachedTile(RenderedTile tile, const std::string& etag) {
+std::shared_ptr<const service::CachedTile> cachedTile(RenderedTile tile, const std::string& etag,
+                                                      const std::string& vary) {
   auto t = std::make_shared<service::CachedTile>();
   t->bytes = std::move(tile.bytes);
   t->bytes.shrink_to_fit(); // the cache charges capacity: keep no encoder reservation
   // Copied, not moved: the cache charges these strings' capacity as copy-assignment sizes it.
   t->mimeType = tile.mimeType;
   t->etag = etag;
+  t->contentEncoding = tile.contentEncoding;
+  t->vary = vary;
   t->evaluateMs = tile.evaluateMs;
   t->encodeMs = tile.encodeMs;
   http::Response plain;

@@ -21,8 +21,10 @@ bool etagMatches(const std::string& ifNoneMatch, const std::string& etag);
 http::Response notModified(const std::string& etag);
 
 /// `tile` as the cache keeps it, with its ETag and the header fields of its 200 response
-/// prepared once, so that every answer from the cache formats and copies nothing.
-std::shared_ptr<const service::CachedTile> cachedTile(RenderedTile tile, const std::string& etag);
+/// prepared once, so that every answer from the cache formats and copies nothing. `vary` names
+/// the request header fields the bytes were chosen by ("" for none).
+std::shared_ptr<const service::CachedTile> cachedTile(RenderedTile tile, const std::string& etag,
+                                                      const std::string& vary = {});
 
 /// The one mapping from a tile's outcome to HTTP: kOk → 200 with the tile (Content-Type, ETag,
 /// immutable Cache-Control, Server-Timing), kNotFound → 404, kUnsupported → 501, kRetryLater →

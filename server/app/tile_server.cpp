@@ -1,5 +1,7 @@
 #include "tile_server.h"
 
+#include "cesium_availability.h"
+#include "cesium_route.h"
 #include "content_encoding.h"
 #include "public_url.h"
 #include "rivers_response.h"
@@ -32,7 +34,8 @@ http::Response jsonResponse(std::string body, const std::string& route) {
 struct TileServer::ServedWorld {
   std::string id;
   std::unique_ptr<TileService> tiles;
-  std::string metadata; ///< worldMetadataJson().
+  std::string metadata;    ///< worldMetadataJson().
+  std::string cesiumLayer; ///< Its Cesium terrain's layer.json.
   /// rivers.geojson, being written from the start (writeRiversAsync). Declared after `tiles`,
   /// whose world it reads.
   std::shared_future<RiversText> rivers;
@@ -55,6 +58,9 @@ TileServer::TileServer(std::vector<std::pair<std::string, construction::WorldDat
     w->center = served.projectionCenter;
     w->metadata = worldMetadataJson(id, served, w->tiles->scheme(tiling::SchemeKind::kLocal));
     w->rivers = writeRiversAsync(served);
+    w->cesiumLayer =
+        CesiumAvailability(w->bounds, w->tiles->scheme(tiling::SchemeKind::kGeographic).maxZoom())
+            .layerJson(id);
     worlds_.push_back(std::move(w));
   }
 }
@@ -156,19 +162,29 @@ void TileServer::handleWorld(const ServedWorld& w, Endpoint endpoint, const Pars
   case Endpoint::kRivers:
     return answerRivers(w.rivers, acceptsGzip(request.header("accept-encoding")), pool_,
                         std::move(done));
-  case Endpoint::kTile:
-    return tile(w, target, request, std::move(done));
+  case Endpoint::kTile: {
+    auto parsed = parseTileRoute(w.id, target.segments, target.query);
+    if (!parsed)
+      return done(http::errorResponse(400, parsed.error().message));
+    return tile(w, parsed.value(), request, std::move(done));
+  }
+  case Endpoint::kCesiumLayer:
+    return done(jsonResponse(w.cesiumLayer, "cesium"));
+  case Endpoint::kCesiumTerrain: {
+    auto parsed =
+        parseCesiumTerrainRoute(w.id, target.segments, target.query, request.header("accept"),
+                                request.header("accept-encoding"));
+    if (!parsed)
+      return done(http::errorResponse(400, parsed.error().message));
+    return tile(w, parsed.value(), request, std::move(done));
+  }
   default:
     return done(http::errorResponse(404, "no such resource under /worlds/" + w.id));
   }
 }
 
-void TileServer::tile(const ServedWorld& w, const ParsedTarget& target,
-                      const http::Request& request, std::function<void(http::Response)> done) {
-  auto parsed = parseTileRoute(w.id, target.segments, target.query);
-  if (!parsed)
-    return done(http::errorResponse(400, parsed.error().message));
-  const TileRequest& tile = parsed.value();
+void TileServer::tile(const ServedWorld& w, const TileRequest& tile, const http::Request& request,
+                      std::function<void(http::Response)> done) {
   if (const base::Status inside = w.tiles->checkTile(tile); !inside) {
     // Refused before any work: labelled "error" in the metrics, as the router's refusals are.
     http::Response r = tileResponse(
@@ -185,7 +201,9 @@ void TileServer::tile(const ServedWorld& w, const ParsedTarget& target,
   if (auto hit = cache_.find(key))
     return done(tileResponse({std::move(hit), service::TileStatus::kOk, {}}));
   const TileService* service = w.tiles.get();
-  auto compute = [this, service, tile, etag = tileEtag(w.cacheKey, key)]() {
+  // Cesium terrain's bytes follow the Accept header (its extensions) and Accept-Encoding.
+  const char* vary = tile.kind() == TileKind::kTerrain ? "Accept, Accept-Encoding" : "";
+  auto compute = [this, service, tile, vary, etag = tileEtag(w.cacheKey, key)]() {
     auto rendered = service->render(tile);
     trimmer_.noteActivity();
     if (!rendered)
@@ -193,7 +211,7 @@ void TileServer::tile(const ServedWorld& w, const ParsedTarget& target,
                                          rendered.error().message};
     metrics_.recordTile(rendered.value().evaluateMs, rendered.value().encodeMs);
     return service::TileCache::Outcome{
-        cachedTile(std::move(rendered).value(), etag), service::TileStatus::kOk, {}};
+        cachedTile(std::move(rendered).value(), etag, vary), service::TileStatus::kOk, {}};
   };
   cache_.get(
       key, compute, [this](std::function<void()> work) { return pool_.submit(std::move(work)); },

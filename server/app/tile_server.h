@@ -5,6 +5,7 @@
 #include "route_parser.h"
 #include "router.h"
 #include "tile_cache.h"
+#include "tile_request.h"
 #include "worker_pool.h"
 
 #include "strahler/construction/world_data.h"
@@ -72,9 +73,9 @@ private:
   void handleWorld(const ServedWorld& world, Endpoint endpoint, const ParsedTarget& target,
                    const http::Request& request, std::function<void(http::Response)> done);
   http::Response tileJson(const ServedWorld& world, const http::Request& request) const;
-  /// The tile pipeline: route → TileRequest → grid → 304 → cache (single flight) → a worker's
-  /// TileService::render → outcome → tileResponse().
-  void tile(const ServedWorld& world, const ParsedTarget& target, const http::Request& request,
+  /// The tile pipeline, after the route became a TileRequest: grid → 304 → cache (single
+  /// flight) → a worker's TileService::render → outcome → tileResponse().
+  void tile(const ServedWorld& world, const TileRequest& tile, const http::Request& request,
             std::function<void(http::Response)> done);
   http::Response metricsResponse() const;
 

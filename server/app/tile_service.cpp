@@ -1,5 +1,6 @@
 #include "tile_service.h"
 
+#include "cesium_terrain_renderer.h"
 #include "heightmap_renderer.h"
 #include "mesh_renderer.h"
 
@@ -22,15 +23,27 @@ TileService::TileService(construction::WorldData world)
     : world_(std::move(world)), evaluator_(world_),
       web_(tiling::TileScheme::webMercator(geometry::LocalProjection(
           world_.data().projectionCenter.x, world_.data().projectionCenter.y))),
-      local_(tiling::TileScheme::localFor(world_.land().bounds())) {
+      local_(tiling::TileScheme::localFor(world_.land().bounds())),
+      geographic_(tiling::TileScheme::geographic(geometry::LocalProjection(
+          world_.data().projectionCenter.x, world_.data().projectionCenter.y))) {
   renderers_[static_cast<std::size_t>(TileKind::kHeightmap)] =
       std::make_unique<HeightmapRenderer>();
   renderers_[static_cast<std::size_t>(TileKind::kMesh)] = std::make_unique<MeshRenderer>();
+  renderers_[static_cast<std::size_t>(TileKind::kTerrain)] =
+      std::make_unique<CesiumTerrainRenderer>(
+          world_,
+          geometry::LocalProjection(world_.data().projectionCenter.x,
+                                    world_.data().projectionCenter.y),
+          CesiumAvailability(worldBounds(world_.data()), geographic_.maxZoom()));
 }
 
 TileService::~TileService() = default;
 
 base::Status TileService::checkTile(const TileRequest& request) const {
+  if ((request.kind() == TileKind::kTerrain) != (request.scheme == tiling::SchemeKind::kGeographic))
+    return base::makeError(base::ErrorCode::kInvalidInput,
+                           "Cesium terrain tiles (.terrain) are served in the geographic pyramid "
+                           "only, and only they are");
   const tiling::TileScheme& s = scheme(request.scheme);
   const tiling::TileId& t = request.tile;
   if (!s.contains(t))

@@ -31,7 +31,8 @@ public:
   TileService& operator=(const TileService&) = delete;
 
   /// kNotFound when the tile of `request` is outside its pyramid (the message says which zooms
-  /// it has); cheap, so a server can refuse such a tile before queueing it.
+  /// it has), kInvalidInput for a kind its pyramid does not serve (Cesium terrain is only, and
+  /// only, in the geographic one); cheap, so a server can refuse such a tile before queueing it.
   base::Status checkTile(const TileRequest& request) const;
   /// The tile, or kNotFound when it is outside the pyramid, kOutOfRange for a bad size, or the
   /// renderer's error (renderStatus() says what each means).
@@ -41,7 +42,15 @@ public:
   const construction::World& world() const noexcept { return world_; }
   /// The pyramid of `kind`.
   const tiling::TileScheme& scheme(tiling::SchemeKind kind) const noexcept {
-    return kind == tiling::SchemeKind::kLocal ? local_ : web_;
+    switch (kind) {
+    case tiling::SchemeKind::kLocal:
+      return local_;
+    case tiling::SchemeKind::kGeographic:
+      return geographic_;
+    case tiling::SchemeKind::kWebMercator:
+      break;
+    }
+    return web_;
   }
 
 private:
@@ -49,8 +58,9 @@ private:
   tiling::TileEvaluator evaluator_;
   tiling::TileScheme web_;
   tiling::TileScheme local_;
+  tiling::TileScheme geographic_;
   /// The renderer of each TileKind, by its value.
-  std::array<std::unique_ptr<const TileRenderer>, 2> renderers_;
+  std::array<std::unique_ptr<const TileRenderer>, 3> renderers_;
 };
 
 } // namespace strahler::app

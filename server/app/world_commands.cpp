@@ -67,10 +67,13 @@ constexpr const char* kAnalyzeUsage =
     "larger --cell-size (e.g. 120 for 100,000 km²).\n";
 
 constexpr const char* kTileUsage =
-    "usage: strahler tile WORLD.world --scheme web|local --z Z --x X --y Y\n"
-    "                     --format png|terrarium|png16|tif|exr|drc|glb [--size N] -o FILE\n"
+    "usage: strahler tile WORLD.world --scheme web|local|cesium --z Z --x X --y Y\n"
+    "                     --format png|terrarium|png16|tif|exr|drc|glb|terrain [--size N]\n"
+    "                     -o FILE\n"
     "Writes one tile. web: Web Mercator XYZ (zoom 0..18); local: the world's metric\n"
-    "quadtree. png is Terrain-RGB. N: pixels per side for rasters (16..1024, default 256),\n"
+    "quadtree; cesium: Cesium's geographic TMS pyramid (Y counts rows from the south),\n"
+    "format terrain only: quantized-mesh-1.0 with normals, water mask and metadata.\n"
+    "png is Terrain-RGB. N: pixels per side for rasters (16..1024, default 256),\n"
     "quads per side for meshes (4..256, default 64).\n";
 
 /// The most raster cells `analyze` evaluates (55 bytes each at its peak on Mallorca at 30 m,
@@ -150,8 +153,8 @@ int runTile(const std::vector<std::string>& raw) {
     return *code;
   WorldCommand& c = std::get<WorldCommand>(opened);
   const std::string scheme = c.args.get("--scheme").value_or("web");
-  if (scheme != "web" && scheme != "local")
-    return usageError({base::ErrorCode::kInvalidInput, "--scheme must be web or local"},
+  if (scheme != "web" && scheme != "local" && scheme != "cesium")
+    return usageError({base::ErrorCode::kInvalidInput, "--scheme must be web, local or cesium"},
                       kTileUsage);
   auto z = c.args.getInt("--z", 0, 30);
   auto x = c.args.getInt("--x", 0, (1ll << 30) - 1);
@@ -163,11 +166,20 @@ int runTile(const std::vector<std::string>& raw) {
         size.ok() ? nullptr : &size.error(), format.ok() ? nullptr : &format.error()})
     if (e)
       return usageError(*e, kTileUsage);
+  if ((scheme == "cesium") != (format.value() == TileFormat::kQuantizedMesh))
+    return usageError(
+        {base::ErrorCode::kInvalidInput, "--format terrain goes with --scheme cesium, and only it"},
+        kTileUsage);
   const TileService service(std::move(c.world));
   TileRequest request;
-  request.scheme =
-      scheme == "local" ? tiling::SchemeKind::kLocal : tiling::SchemeKind::kWebMercator;
+  request.scheme = scheme == "local"    ? tiling::SchemeKind::kLocal
+                   : scheme == "cesium" ? tiling::SchemeKind::kGeographic
+                                        : tiling::SchemeKind::kWebMercator;
   request.tile = {static_cast<int>(*z.value()), *x.value(), *y.value()};
+  if (request.scheme == tiling::SchemeKind::kGeographic) { // a TMS row, as in Cesium's URLs
+    request.tile.y = (std::int64_t{1} << request.tile.z) - 1 - request.tile.y;
+    request.options.extensions = kOctVertexNormals | kWaterMask | kMetadata;
+  }
   request.format = format.value();
   request.options.size = static_cast<int>(size.value().value_or(0));
   auto tile = service.render(request);

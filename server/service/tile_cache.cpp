@@ -281,7 +281,8 @@ std::size_t TileCache::entryOverheadBytes() noexcept {
 
 std::size_t TileCache::chargedBytes(const std::string& key, const CachedTile& tile) noexcept {
   return heapBytes(key) + heapBytes(tile.bytes) + heapBytes(tile.mimeType) + heapBytes(tile.etag) +
-         heapBytes(tile.httpFields) + entryOverheadBytes();
+         heapBytes(tile.contentEncoding) + heapBytes(tile.vary) + heapBytes(tile.httpFields) +
+         entryOverheadBytes();
 }
 
 TileCache::TileCache(std::size_t maxBytes)

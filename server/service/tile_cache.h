@@ -16,7 +16,9 @@ namespace strahler::service {
 struct CachedTile {
   std::string bytes;
   std::string mimeType;
-  std::string etag; ///< Strong ETag, quoted.
+  std::string etag;            ///< Strong ETag, quoted.
+  std::string contentEncoding; ///< The bytes' content coding ("gzip"), "" for none.
+  std::string vary;            ///< The request header fields the bytes depend on, "" for none.
   /// The header fields of the tile's response, serialised once by whoever made the tile (opaque
   /// to the cache, which only charges their bytes; may be empty).
   std::string httpFields;

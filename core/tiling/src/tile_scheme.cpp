@@ -38,6 +38,14 @@ TileScheme TileScheme::webMercator(const geometry::LocalProjection& projection) 
   return s;
 }
 
+TileScheme TileScheme::geographic(const geometry::LocalProjection& projection) {
+  TileScheme s;
+  s.kind_ = SchemeKind::kGeographic;
+  s.maxZoom_ = kMaxGeographicZoom;
+  s.projection_ = projection;
+  return s;
+}
+
 TileScheme TileScheme::local(Vec2 center, double rootSide) {
   TileScheme s;
   s.kind_ = SchemeKind::kLocal;
@@ -57,7 +65,15 @@ bool TileScheme::contains(const TileId& t) const noexcept {
   if (t.z < 0 || t.z > maxZoom_)
     return false;
   const std::int64_t n = std::int64_t{1} << t.z;
-  return t.x >= 0 && t.y >= 0 && t.x < n && t.y < n;
+  const std::int64_t columns = kind_ == SchemeKind::kGeographic ? 2 * n : n;
+  return t.x >= 0 && t.y >= 0 && t.x < columns && t.y < n;
+}
+
+geometry::Aabb TileScheme::geographicBounds(const TileId& t) const noexcept {
+  const double side = 180.0 / static_cast<double>(std::int64_t{1} << t.z);
+  const Vec2 northWest{-180.0 + static_cast<double>(t.x) * side,
+                       90.0 - static_cast<double>(t.y) * side};
+  return {{northWest.x, northWest.y - side}, {northWest.x + side, northWest.y}};
 }
 
 geometry::Aabb TileScheme::localBounds(const TileId& t) const noexcept {
@@ -68,16 +84,34 @@ geometry::Aabb TileScheme::localBounds(const TileId& t) const noexcept {
 }
 
 SampleGrid TileScheme::rasterGrid(const TileId& tile, int size) const {
-  return kind_ == SchemeKind::kLocal ? localGrid(tile, size, size, 0.5, true)
-                                     : webGrid(tile, size, size, 0.5, true);
+  switch (kind_) {
+  case SchemeKind::kLocal:
+    return localGrid(tile, size, size, 0.5, true);
+  case SchemeKind::kGeographic:
+    return geographicGrid(tile, size, size, 0.5, true);
+  case SchemeKind::kWebMercator:
+    break;
+  }
+  return webGrid(tile, size, size, 0.5, true);
 }
 
 SampleGrid TileScheme::meshGrid(const TileId& tile, int quads) const {
-  return kind_ == SchemeKind::kLocal ? localGrid(tile, quads, quads + 3, -1.0, false)
-                                     : webGrid(tile, quads, quads + 3, -1.0, false);
+  switch (kind_) {
+  case SchemeKind::kLocal:
+    return localGrid(tile, quads, quads + 3, -1.0, false);
+  case SchemeKind::kGeographic:
+    return geographicGrid(tile, quads, quads + 3, -1.0, false);
+  case SchemeKind::kWebMercator:
+    break;
+  }
+  return webGrid(tile, quads, quads + 3, -1.0, false);
 }
 
 std::pair<Vec2, double> TileScheme::meshFrame(const TileId& tile, int quads) const {
+  if (kind_ == SchemeKind::kGeographic) {
+    const geometry::Aabb box = geographicBounds(tile);
+    return {box.min, box.size().x / quads};
+  }
   if (kind_ == SchemeKind::kLocal) {
     const geometry::Aabb box = localBounds(tile);
     return {box.min, box.size().x / quads};
@@ -131,6 +165,30 @@ SampleGrid TileScheme::webGrid(const TileId& tile, int n, int count, double firs
   for (int j = 0; j < count; ++j)
     g.rowSpacing[static_cast<std::size_t>(j)] =
         step * std::cos(lats[static_cast<std::size_t>(j)] / kDeg);
+  g.bounds = boundsOf(g.points);
+  return g;
+}
+
+SampleGrid TileScheme::geographicGrid(const TileId& tile, int n, int count, double first,
+                                      bool northFirst) const {
+  // Degrees per sample; lon = −180 + global column · step, lat = 90 − global row · step, from
+  // global indices so that neighbouring tiles compute their shared samples identically.
+  const double step = 180.0 / (static_cast<double>(std::int64_t{1} << tile.z) * n);
+  std::vector<double> lons = axis(tile.x, n, count, first, step);
+  for (double& x : lons)
+    x -= 180.0;
+  std::vector<double> lats(static_cast<std::size_t>(count));
+  for (int j = 0; j < count; ++j) {
+    const double row = northFirst ? static_cast<double>(tile.y) * n + j + first
+                                  : static_cast<double>(tile.y + 1) * n + 1.0 - j;
+    lats[static_cast<std::size_t>(j)] = std::clamp(90.0 - row * step, -90.0, 90.0);
+  }
+  SampleGrid g;
+  g.width = g.height = count;
+  projection_.forwardGrid(lons, lats, g.points);
+  // The north-south distance between samples (the east-west one is shorter by cos φ): the
+  // coarser of the two, so that no octave finer than the grid survives to alias.
+  g.rowSpacing.assign(static_cast<std::size_t>(count), step / kDeg * geometry::kEarthRadius);
   g.bounds = boundsOf(g.points);
   return g;
 }

@@ -86,5 +86,54 @@ TEST(TileScheme, WebSamplesMatchTheProjectionOfTheirLonLat) {
               300.0);
 }
 
+TEST(TileScheme, GeographicTilesHaveTwoRootsAndSquareDegreeBounds) {
+  const TileScheme geo = TileScheme::geographic(geometry::LocalProjection(2.9, 39.6));
+  EXPECT_EQ(geo.kind(), SchemeKind::kGeographic);
+  EXPECT_EQ(geo.maxZoom(), TileScheme::kMaxGeographicZoom);
+  EXPECT_TRUE(geo.contains({0, 1, 0}));
+  EXPECT_FALSE(geo.contains({0, 2, 0}));
+  EXPECT_FALSE(geo.contains({0, 0, 1}));
+  EXPECT_TRUE(geo.contains({3, 15, 7}));
+  EXPECT_FALSE(geo.contains({3, 16, 7}));
+  EXPECT_FALSE(geo.contains({TileScheme::kMaxGeographicZoom + 1, 0, 0}));
+  const geometry::Aabb east = geo.geographicBounds({0, 1, 0});
+  EXPECT_EQ(east.min.x, 0.0);
+  EXPECT_EQ(east.max.x, 180.0);
+  EXPECT_EQ(east.min.y, -90.0);
+  EXPECT_EQ(east.max.y, 90.0);
+  // Row 0 is the northernmost: level 2's row 1 spans latitudes 0..45.
+  const geometry::Aabb t = geo.geographicBounds({2, 4, 1});
+  EXPECT_EQ(t.min.x, 0.0);
+  EXPECT_EQ(t.max.x, 45.0);
+  EXPECT_EQ(t.min.y, 0.0);
+  EXPECT_EQ(t.max.y, 45.0);
+}
+
+TEST(TileScheme, GeographicMeshGridsShareTheirEdgeSamplesWithTheirNeighbours) {
+  const geometry::LocalProjection projection(2.9, 39.6);
+  const TileScheme geo = TileScheme::geographic(projection);
+  const int quads = 16, n = quads + 3;
+  const TileId a{12, 4129, 1133}, east{12, 4130, 1133}, north{12, 4129, 1132};
+  const SampleGrid ga = geo.meshGrid(a, quads), ge = geo.meshGrid(east, quads),
+                   gn = geo.meshGrid(north, quads);
+  ASSERT_EQ(ga.width, n);
+  ASSERT_EQ(ga.points.size(), static_cast<std::size_t>(n * n));
+  // Row 0 is the south border; sample (1, 1) is the tile's south-west corner.
+  const geometry::Aabb box = geo.geographicBounds(a);
+  const Vec2 corner = projection.inverse(ga.points[static_cast<std::size_t>(n + 1)]);
+  EXPECT_NEAR(corner.x, box.min.x, 1e-9);
+  EXPECT_NEAR(corner.y, box.min.y, 1e-9);
+  for (int j = 0; j < n; ++j) {
+    // a's east edge column (quads + 1) is the east neighbour's west edge column (1).
+    EXPECT_TRUE(sameBits(ga.points[static_cast<std::size_t>(j * n + quads + 1)],
+                         ge.points[static_cast<std::size_t>(j * n + 1)]));
+    // a's north edge row (quads + 1) is the north neighbour's south edge row (1).
+    EXPECT_TRUE(sameBits(ga.points[static_cast<std::size_t>((quads + 1) * n + j)],
+                         gn.points[static_cast<std::size_t>(n + j)]));
+  }
+  EXPECT_EQ(ga.rowSpacing, ge.rowSpacing);
+  EXPECT_NEAR(ga.rowSpacing[0], 180.0 / 4096 / quads * 3.14159265358979 / 180 * 6371008.8, 1e-6);
+}
+
 } // namespace
 } // namespace strahler::tiling

@@ -33,6 +33,9 @@ struct SampleGrid {
 enum class SchemeKind {
   kWebMercator, ///< EPSG:3857 XYZ tiles, for web maps.
   kLocal,       ///< A metric quadtree over the world's bounding square, for game clients.
+  /// EPSG:4326 tiles of 2 × 1 roots (Cesium's quantized-mesh pyramid); TileId rows still count
+  /// from the north (the TMS row of a URL is 2^z − 1 − y).
+  kGeographic,
 };
 
 /// A tile pyramid over one world: tile bounds and the sample grids of raster and mesh tiles.
@@ -43,6 +46,8 @@ class TileScheme {
 public:
   /// The Web Mercator pyramid (zoom 0..kMaxWebZoom) seen through a world's projection.
   static TileScheme webMercator(const geometry::LocalProjection& projection);
+  /// The geographic pyramid (zoom 0..kMaxGeographicZoom) seen through a world's projection.
+  static TileScheme geographic(const geometry::LocalProjection& projection);
   /// The local pyramid over the square of side `rootSide` metres centred on `center`.
   static TileScheme local(geometry::Vec2 center, double rootSide);
   /// The local pyramid of a world whose land spans `landBounds`: a square 10 % larger than
@@ -52,15 +57,20 @@ public:
   /// Deepest Web Mercator zoom served (≈ 0.6 m per pixel at the equator for 256² tiles).
   static constexpr int kMaxWebZoom = 18;
 
+  /// Deepest geographic zoom served (≈ 2.4 m between the vertices of a 64-quad mesh tile).
+  static constexpr int kMaxGeographicZoom = 17;
   /// Which pyramid this is.
   SchemeKind kind() const noexcept { return kind_; }
   /// Deepest zoom level.
   int maxZoom() const noexcept { return maxZoom_; }
-  /// True when the tile exists in this pyramid (zoom in range, x and y in [0, 2^z)).
+  /// True when the tile exists in this pyramid (zoom in range, x and y in [0, 2^z); x in
+  /// [0, 2^(z+1)) for kGeographic).
   bool contains(const TileId& tile) const noexcept;
   /// The local square of a LocalQuad tile (kLocal only): its south-west corner and side, m.
   geometry::Aabb localBounds(const TileId& tile) const noexcept;
 
+  /// The longitude/latitude box of a kGeographic tile, degrees: min = (west, south).
+  geometry::Aabb geographicBounds(const TileId& tile) const noexcept;
   /// Pixel-centre samples of a `size`×`size` raster tile.
   SampleGrid rasterGrid(const TileId& tile, int size) const;
   /// Bordered vertex samples of a mesh tile with `quads`×`quads` quads.
@@ -73,6 +83,8 @@ private:
   // Samples k < count per axis at global index (tile · n + k + first), n samples per tile.
   SampleGrid webGrid(const TileId& tile, int n, int count, double first, bool northFirst) const;
   SampleGrid localGrid(const TileId& tile, int n, int count, double first, bool northFirst) const;
+  SampleGrid geographicGrid(const TileId& tile, int n, int count, double first,
+                            bool northFirst) const;
 
   SchemeKind kind_ = SchemeKind::kLocal;
   int maxZoom_ = 0;

@@ -1,0 +1,38 @@
+#pragma once
+
+#include "strahler/construction/world.h"
+#include "strahler/geometry/aabb.h"
+#include "strahler/geometry/projection.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace strahler::tiling {
+
+/// Where a world has water over a longitude/latitude box: its sea and lakes (everything off
+/// its land) and the surface of every river at least one mask cell wide.
+class WaterMask {
+public:
+  /// Cells per side of a full mask (Cesium's watermask extension).
+  static constexpr int kSize = 256;
+  /// Value of a water cell (land is 0).
+  static constexpr std::uint8_t kWater = 255;
+
+  /// A mask maker over `world` (which must outlive it), seen through `projection`.
+  WaterMask(const construction::World& world, const geometry::LocalProjection& projection);
+
+  /// The mask of `lonLat` (min = west/south, degrees): one byte (0 or kWater) when the box is
+  /// all land or all water, else kSize² bytes, row 0 north, column 0 west, each the value at
+  /// its cell's centre.
+  std::vector<std::uint8_t> of(const geometry::Aabb& lonLat) const;
+
+private:
+  /// Marks the cells of `mask` that lie within half a channel width of a river of the box.
+  void addRivers(const geometry::Aabb& lonLat, const std::vector<geometry::Vec2>& cells,
+                 std::vector<std::uint8_t>& mask) const;
+
+  const construction::World& world_;
+  geometry::LocalProjection projection_;
+};
+
+} // namespace strahler::tiling

@@ -1,0 +1,122 @@
+#include "cesium_route.h"
+
+#include "content_encoding.h"
+#include "route_parser.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace strahler::app {
+namespace {
+
+base::Error badTerrain(const std::string& why) {
+  return base::makeError(base::ErrorCode::kInvalidInput, why);
+}
+
+std::string_view trimmed(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
+    s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t'))
+    s.remove_suffix(1);
+  return s;
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
+
+/// The largest TMS zoom whose rows can be flipped without overflow.
+constexpr std::int64_t kDeepestFlippable = 40;
+
+} // namespace
+
+base::Result<unsigned> parseCesiumExtensions(std::string_view list) {
+  unsigned bits = 0;
+  for (bool more = !list.empty(); more;) {
+    const std::size_t dash = list.find('-');
+    const std::string_view name = list.substr(0, dash);
+    more = dash != std::string_view::npos;
+    list = more ? list.substr(dash + 1) : std::string_view{};
+    unsigned bit = 0;
+    if (name == "octvertexnormals")
+      bit = kOctVertexNormals;
+    else if (name == "watermask")
+      bit = kWaterMask;
+    else if (name == "metadata")
+      bit = kMetadata;
+    else
+      return badTerrain("unknown quantized-mesh extension '" + std::string(name.substr(0, 64)) +
+                        "' (octvertexnormals, watermask and metadata are served)");
+    if (bits & bit)
+      return badTerrain("quantized-mesh extension '" + std::string(name) + "' named twice");
+    bits |= bit;
+  }
+  return bits;
+}
+
+base::Result<unsigned> cesiumExtensionsFromAccept(std::string_view accept) {
+  while (!accept.empty()) {
+    const std::size_t comma = accept.find(',');
+    std::string_view range = accept.substr(0, comma);
+    accept = comma == std::string_view::npos ? std::string_view{} : accept.substr(comma + 1);
+    const std::size_t semicolon = range.find(';');
+    if (lower(trimmed(range.substr(0, semicolon))) != "application/vnd.quantized-mesh")
+      continue;
+    range = semicolon == std::string_view::npos ? std::string_view{} : range.substr(semicolon + 1);
+    while (!range.empty()) {
+      const std::size_t next = range.find(';');
+      const std::string_view parameter = trimmed(range.substr(0, next));
+      range = next == std::string_view::npos ? std::string_view{} : range.substr(next + 1);
+      const std::size_t equals = parameter.find('=');
+      if (equals != std::string_view::npos &&
+          lower(trimmed(parameter.substr(0, equals))) == "extensions") {
+        std::string_view value = trimmed(parameter.substr(equals + 1));
+        if (value.size() >= 2 && value.front() == '"' && value.back() == '"')
+          value = value.substr(1, value.size() - 2);
+        return parseCesiumExtensions(value);
+      }
+    }
+    return 0u;
+  }
+  return 0u;
+}
+
+base::Result<TileRequest> parseCesiumTerrainRoute(const std::string& world,
+                                                  const std::vector<std::string>& s,
+                                                  const std::map<std::string, std::string>& query,
+                                                  std::string_view accept,
+                                                  std::string_view acceptEncoding) {
+  for (const auto& [name, value] : query)
+    if (name != "extensions" && name != "v")
+      return badTerrain("unknown query parameter '" + name.substr(0, 64) +
+                        "' (terrain tiles take only extensions and v)");
+  const std::string& last = s[5];
+  const std::string suffix = ".terrain";
+  if (last.size() <= suffix.size() ||
+      last.compare(last.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return badTerrain("a Cesium terrain tile is named {y}.terrain");
+  auto z = parseDecimal(s[3], 2), x = parseDecimal(s[4], 10),
+       y = parseDecimal(last.substr(0, last.size() - suffix.size()), 10);
+  for (auto* v : {&z, &x, &y})
+    if (!*v)
+      return badTerrain("tile coordinate " + v->error().message);
+  TileRequest request;
+  request.world = world;
+  request.scheme = tiling::SchemeKind::kGeographic;
+  request.format = TileFormat::kQuantizedMesh;
+  // TMS rows count from the south; a row outside the level stays outside after the flip.
+  const std::int64_t rows = std::int64_t{1} << std::min(z.value(), kDeepestFlippable);
+  request.tile = {static_cast<int>(z.value()), x.value(), rows - 1 - y.value()};
+  if (const auto e = query.find("extensions"); e != query.end()) {
+    STRAHLER_ASSIGN_OR_RETURN(request.options.extensions, parseCesiumExtensions(e->second));
+  } else {
+    STRAHLER_ASSIGN_OR_RETURN(request.options.extensions, cesiumExtensionsFromAccept(accept));
+  }
+  request.options.gzip = acceptsGzip(acceptEncoding);
+  return request;
+}
+
+} // namespace strahler::app

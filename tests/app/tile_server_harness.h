@@ -1,0 +1,81 @@
+#pragma once
+// A tile server over the default island on real sockets (127.0.0.1, an ephemeral port), and a
+// one-request client: what the server's endpoint tests share.
+#include "test_client.h"
+#include "test_worlds.h"
+#include "tile_server.h"
+
+#include "strahler/construction/world_builder.h"
+#include "strahler/http/http_server.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <map>
+#include <string>
+
+namespace strahler::app::test_support {
+
+/// A response with its headers by lower-case name, as these tests read them.
+struct HttpResponse {
+  int status = 0; ///< 0 when no response came.
+  std::map<std::string, std::string> headers;
+  std::string body;
+};
+
+/// `method` of `target` with Connection: close on a fresh connection (each step bounded by
+/// 20 s).
+inline HttpResponse request(std::uint16_t port, const std::string& target,
+                            const std::string& method = "GET",
+                            const std::string& extraHeaders = "") {
+  const std::string bytes = method + " " + target +
+                            " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) +
+                            "\r\nConnection: close\r\n" + extraHeaders + "\r\n";
+  HttpResponse out;
+  if (const auto r = http::test::fetch(port, bytes, std::chrono::seconds(20))) {
+    out.status = r->status;
+    for (const auto& [name, value] : r->headers)
+      out.headers[name] = value;
+    out.body = r->body;
+  }
+  return out;
+}
+
+/// A running server over the default island.
+struct Running {
+  TileServer tiles;
+  http::Server server;
+  explicit Running(std::size_t cacheBytes = 64u << 20, std::string publicUrl = "",
+                   http::TrustedProxies trusted = {})
+      : tiles({{"island",
+                construction::generateWorldData(strahler::test_support::defaultIslandSpec(), "k")
+                    .value()}},
+              serverOptions(cacheBytes, std::move(publicUrl))),
+        server(
+            options(std::move(trusted)),
+            [this](const http::Request& r, std::function<void(http::Response)> done) {
+              tiles.handle(r, std::move(done));
+            },
+            [this](const std::string& route, int status, std::size_t bytes, double ms) {
+              tiles.observe(route, status, bytes, ms);
+            }) {
+    EXPECT_TRUE(server.start().ok());
+  }
+  static TileServerOptions serverOptions(std::size_t cacheBytes, std::string publicUrl) {
+    TileServerOptions o;
+    o.workers = 2;
+    o.cacheBytes = cacheBytes;
+    o.publicUrl = std::move(publicUrl);
+    return o;
+  }
+  static http::ServerOptions options(http::TrustedProxies trusted) {
+    http::ServerOptions o;
+    o.port = 0;
+    o.accessLog = false;
+    o.trustedProxies = std::move(trusted);
+    return o;
+  }
+  std::uint16_t port() const { return server.port(); }
+};
+
+} // namespace strahler::app::test_support
