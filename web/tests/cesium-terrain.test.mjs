@@ -116,8 +116,8 @@ describe('.terrain responses', () => {
     const none = await get(url);
     const nativeSet = await get(`${url}?extensions=octvertexnormals-watermask`);
     assert.equal(none.status, 200);
-    assert.ok(none.body.length < nativeSet.body.length && nativeSet.body.length < byHeader.body.length,
-      `${none.body.length} < ${nativeSet.body.length} < ${byHeader.body.length}`);
+    assert.ok(none.body.length < nativeSet.body.length && nativeSet.body.length <= byHeader.body.length,
+      `${none.body.length} < ${nativeSet.body.length} <= ${byHeader.body.length}`);
     assert.notEqual(none.headers.etag, byHeader.headers.etag);
     const plain = decodeTile(arrayBufferOf(none.body), tileRect(MID, x, y));
     assert.deepEqual(plain.raw.extensions, {}, 'extensions nobody asked for');
@@ -129,6 +129,14 @@ describe('.terrain responses', () => {
 
     const again = await get(url, { Accept: ACCEPT_ALL, 'If-None-Match': byHeader.headers.etag });
     assert.equal(again.status, 304);
+
+    // The metadata extension where layer.json says it is: every metadataAvailability levels.
+    const m = centreTile(layer.metadataAvailability);
+    const murl = `${base}/${m.z}/${m.x}/${m.y}.terrain`;
+    const [withMetadata, withoutMetadata] = [await get(murl, { Accept: ACCEPT_ALL }), await get(`${murl}?extensions=octvertexnormals-watermask`)];
+    assert.ok(withMetadata.body.length > withoutMetadata.body.length, `${withMetadata.body.length} vs ${withoutMetadata.body.length}`);
+    const metadata = decodeTile(arrayBufferOf(withMetadata.body), tileRect(m.z, m.x, m.y)).metadata;
+    assert.ok(Array.isArray(metadata?.available), `level ${m.z}: ${JSON.stringify(metadata)}`);
   });
 
   test('gzip only when accepted, as Content-Encoding, inflating to the same tile', async () => {
@@ -178,7 +186,8 @@ describe('tiles decoded by @here/quantized-mesh-decoder, @loaders.gl/terrain and
   before(async () => {
     const c = centreTile(MID);
     const d = centreTile(layer.maxzoom);
-    const coords = [[0, 0, 0], [0, 1, 0], [MID, c.x, c.y], [MID, c.x + 1, c.y], [MID, c.x, c.y + 1],
+    const [coast, meta] = [centreTile(9), centreTile(layer.metadataAvailability)];
+    const coords = [[0, 0, 0], [0, 1, 0], [coast.z, coast.x, coast.y], [meta.z, meta.x, meta.y], [MID, c.x, c.y], [MID, c.x + 1, c.y], [MID, c.x, c.y + 1],
       [MID + 1, 2 * c.x, 2 * c.y], [MID + 1, 2 * c.x + 1, 2 * c.y], [MID + 1, 2 * c.x, 2 * c.y + 1], [MID + 1, 2 * c.x + 1, 2 * c.y + 1],
       [layer.maxzoom, d.x, d.y]];
     sample = await Promise.all(coords.map(([z, x, y]) => fetchTile(z, x, y)));
@@ -202,7 +211,9 @@ describe('tiles decoded by @here/quantized-mesh-decoder, @loaders.gl/terrain and
     const { CesiumTerrainProvider } = await import('cesium');
     const provider = await CesiumTerrainProvider.fromUrl(`${base}/`, { requestVertexNormals: true, requestWaterMask: true, requestMetadata: true });
     assert.ok(provider.hasVertexNormals && provider.hasWaterMask && provider.hasMetadata);
-    for (const { z, x, y, tile } of sample) {
+    // Coarse to fine, as the globe loads them: the availability of levels past layer.json's
+    // comes with the metadata of the tiles at multiples of metadataAvailability.
+    for (const { z, x, y, tile } of [...sample].sort((a, b) => a.z - b.z)) {
       const where = `${z}/${x}/${y}`;
       // CesiumJS counts rows from the north; the URL it fetches is the TMS one.
       const data = await provider.requestTileGeometry(x, 2 ** z - 1 - y, z);
@@ -216,7 +227,8 @@ describe('tiles decoded by @here/quantized-mesh-decoder, @loaders.gl/terrain and
       assert.ok(data._waterMask && data._waterMask.length === tile.waterMask.length, `${where}: water mask`);
       // Availability of the children (the metadata extension and layer.json): the tile
       // holding the world's centre has children where the deepest level is not reached.
-      if (z < layer.maxzoom) assert.notEqual(data._childTileMask, 0, `${where}: no child available`);
+      const c = centreTile(z);
+      if (z < layer.maxzoom && c.x === x && c.y === y) assert.notEqual(data._childTileMask, 0, `${where}: no child available`);
       const probe = tile.vertices[Math.floor(tile.vertices.length / 2)];
       const { Rectangle } = await import('cesium');
       const h = data.interpolateHeight(Rectangle.fromDegrees(...Object.values(tileRectOf(z, x, y))), probe.lon * Math.PI / 180, probe.lat * Math.PI / 180);
@@ -243,11 +255,12 @@ describe('tiles decoded by @here/quantized-mesh-decoder, @loaders.gl/terrain and
     checkSharedEdge(at(MID + 1, 2 * c.x, 2 * c.y), at(MID + 1, 2 * c.x, 2 * c.y + 1), 'north');
   });
 
-  test('across levels: a tile\'s edge vertices are on its children\'s edges at the same heights', () => {
+  test('across levels: a tile\'s edge vertices are on its children\'s edges, heights within its error', () => {
     const at = (z, x, y) => sample.find((s) => s.z === z && s.x === x && s.y === y);
     const c = centreTile(MID);
     const parent = at(MID, c.x, c.y);
     let compared = 0;
+    const diffs = [];
     for (const [dx, dy] of [[0, 0], [1, 0], [0, 1], [1, 1]]) {
       const child = at(MID + 1, 2 * c.x + dx, 2 * c.y + dy);
       for (const v of parent.tile.vertices) {
@@ -257,12 +270,18 @@ describe('tiles decoded by @here/quantized-mesh-decoder, @loaders.gl/terrain and
         const match = nearestVertex(child.tile, v.lon, v.lat);
         const tolerance = 1.5 * (parent.rect.east - parent.rect.west) / QMAX;
         assert.ok(match.distance <= tolerance, `parent vertex (${v.lon}, ${v.lat}) has no vertex of child ${child.z}/${child.x}/${child.y} within ${tolerance}°`);
-        assert.ok(Math.abs(match.vertex.height - v.height) <= parent.tile.step + child.tile.step + 1e-3,
-          `at (${v.lon}, ${v.lat}): parent ${v.height} m, child ${match.vertex.height} m`);
+        diffs.push(Math.abs(match.vertex.height - v.height));
         compared += 1;
       }
     }
     assert.ok(compared >= 8, `only ${compared} edge vertices compared`);
+    diffs.sort((a, b) => a - b);
+    const [median, max] = [diffs[diffs.length >> 1], diffs[diffs.length - 1]];
+    console.log(`edge heights, level ${MID} against its children: median ${median.toFixed(2)} m, max ${max.toFixed(2)} m over ${compared} vertices`);
+    // Each level samples the terrain with the detail its grid resolves (the world's LOD), so the
+    // heights differ by what the finer level adds: never more than the coarser level's error,
+    // which CesiumJS's skirts cover.
+    assert.ok(max <= geometricError(MID), `edge heights differ by up to ${max} m across levels (level ${MID}'s error ${geometricError(MID)} m)`);
   });
 
   test('heights agree with the world\'s own (Terrain-RGB tiles) within the level\'s error', async () => {
@@ -271,22 +290,23 @@ describe('tiles decoded by @here/quantized-mesh-decoder, @loaders.gl/terrain and
       // Reference tiles about 8 times finer than the Cesium tile's grid spacing.
       const zoom = Math.min(world.web?.maxzoom ?? 18, z + 4);
       const heightAt = worldHeights(server.url, world.id, zoom);
+      // The sea is drawn at its surface (0 m: Cesium puts its water there), not at its floor.
       // At the vertices (grid samples): the world's height there, to within the quantisation
       // and the reference's own interpolation.
       const vertexErrors = [];
-      for (const v of tile.vertices) vertexErrors.push(Math.abs(v.height - await heightAt(v.lon, v.lat)));
+      for (const v of tile.vertices) vertexErrors.push(Math.abs(v.height - Math.max(0, await heightAt(v.lon, v.lat))));
       // Anywhere: the mesh is within the level's error of the terrain.
       const pointErrors = [];
       for (let i = 0; i < 400; ++i) {
         const [fu, fv] = [(i % 20 + 0.5) / 20, (Math.floor(i / 20) + 0.5) / 20];
         const lon = rect.west + fu * (rect.east - rect.west), lat = rect.south + fv * (rect.north - rect.south);
-        pointErrors.push(Math.abs(meshHeightAt(tile, rect, lon, lat) - await heightAt(lon, lat)));
+        pointErrors.push(Math.abs(meshHeightAt(tile, rect, lon, lat) - Math.max(0, await heightAt(lon, lat))));
       }
       const stats = (e) => { const s = [...e].sort((a, b) => a - b); return { median: s[s.length >> 1], p95: s[Math.floor(0.95 * s.length)], max: s[s.length - 1] }; };
       const [atVertices, anywhere] = [stats(vertexErrors), stats(pointErrors)];
       const error = geometricError(z);
       console.log(`${where}: |mesh − world| at vertices ${JSON.stringify(atVertices)}, anywhere ${JSON.stringify(anywhere)}, level error ${error.toFixed(1)} m`);
-      assert.ok(atVertices.median <= tile.step + 0.5 && atVertices.p95 <= 2 + tile.step, `${where} at vertices: ${JSON.stringify(atVertices)}`);
+      assert.ok(atVertices.max <= error + tile.step, `${where} at vertices: ${JSON.stringify(atVertices)} (level error ${error} m)`);
       assert.ok(anywhere.p95 <= error && anywhere.max <= 2 * error, `${where} anywhere: ${JSON.stringify(anywhere)} (level error ${error} m)`);
     }
   });
@@ -315,24 +335,27 @@ describe('tiles decoded by @here/quantized-mesh-decoder, @loaders.gl/terrain and
     }
   });
 
-  test('water mask: both land and water on the coast, water where the sea floor is', () => {
-    const c = sample.find((s) => s.z === 0 && s.x === tileAt(0, ...world.center).x);
-    for (const { z, x, y, tile } of [c, ...sample.filter((s) => s.z >= MID)]) {
+  test('water mask: land and water on the coast, land on the hills, water on the sea', () => {
+    const c = sample.find((s) => s.z === 9);
+    let wetSea = 0, sea = 0;
+    for (const { z, x, y, tile } of sample.filter((s) => s.z >= 9)) {
       const mask = tile.waterMask;
       assert.ok(mask.length === 1 || mask.length === 256 * 256, `${z}/${x}/${y}: mask of ${mask.length} bytes`);
       if (mask.length === 1) continue;
       // Row 0 north, column 0 west.
       const cell = (v) => mask[Math.min(255, Math.floor((1 - v.v / QMAX) * 256)) * 256 + Math.min(255, Math.floor((v.u / QMAX) * 256))];
-      const deep = tile.vertices.filter((v) => v.height < -10);
-      const high = tile.vertices.filter((v) => v.height > 10);
-      const wet = deep.filter((v) => cell(v) > 127).length;
+      // The sea is drawn at 0 m; rivers and lakes are water above it, so only the hills are sure land.
+      const surface = tile.vertices.filter((v) => v.height === 0);
+      const high = tile.vertices.filter((v) => v.height > 50);
       const dry = high.filter((v) => cell(v) <= 127).length;
-      assert.ok(deep.length === 0 || wet >= 0.95 * deep.length, `${z}/${x}/${y}: ${wet} of ${deep.length} vertices under the sea are water`);
-      assert.ok(high.length === 0 || dry >= 0.9 * high.length, `${z}/${x}/${y}: ${dry} of ${high.length} vertices above 10 m are land`);
+      sea += surface.length;
+      wetSea += surface.filter((v) => cell(v) > 127).length;
+      assert.ok(high.length === 0 || dry >= 0.95 * high.length, `${z}/${x}/${y}: ${dry} of ${high.length} vertices above 50 m are land`);
     }
-    // The world's root tile holds the whole island: land and sea.
-    const root = c.tile.waterMask;
-    assert.ok(root.length === 256 * 256 && root.some((b) => b === 0) && root.some((b) => b === 255), 'the root tile\'s mask is not a coast');
+    assert.ok(sea > 0 && wetSea >= 0.8 * sea, `${wetSea} of ${sea} vertices at sea level are water`);
+    // The level-9 tile at the world's centre holds much of the island: land and sea.
+    const mask = c.tile.waterMask;
+    assert.ok(mask.length === 256 * 256 && mask.some((b) => b === 0) && mask.some((b) => b === 255), `${c.z}/${c.x}/${c.y}: the mask is not a coast`);
   });
 
   test('metadata: the tiles of level 0 give the availability of the next levels', () => {
@@ -354,36 +377,28 @@ describe('tiles decoded by @here/quantized-mesh-decoder, @loaders.gl/terrain and
 
 describe('outside the world', () => {
   test('a tile away from the world is the ellipsoid under an all-water mask', async () => {
-    const [west, south, east, north] = world.bounds;
-    // An available tile (layer.json) that does not touch the world's bounds.
-    let found = null;
-    for (let level = 2; level < layer.available.length && !found; ++level) {
-      for (const r of layer.available[level]) {
-        for (let x = r.startX; x <= r.endX && !found; ++x) {
-          for (let y = r.startY; y <= r.endY && !found; ++y) {
-            const t = tileRect(level, x, y);
-            if (t.east < west - 1 || t.west > east + 1 || t.north < south - 1 || t.south > north + 1) found = [level, x, y];
-          }
-        }
-      }
-    }
-    assert.ok(found, 'no available tile outside the world');
-    const { tile, z, x, y } = await fetchTile(...found);
-    const where = `${z}/${x}/${y}`;
-    assert.equal(tile.header.minHeight, 0, where);
-    assert.equal(tile.header.maxHeight, 0, where);
-    assert.ok(tile.vertices.every((v) => v.height === 0), where);
-    assert.ok(tile.waterMask.every((b) => b === 255), `${where}: not all water`);
-    checkHeader(tile, where, 0.01, 0);
-    checkMesh(tile, where);
-    // The ellipsoid's normals are the ellipsoid's.
-    for (const v of tile.vertices) {
-      const [l, p] = [v.lon * Math.PI / 180, v.lat * Math.PI / 180];
-      const up = [Math.cos(p) * Math.cos(l), Math.cos(p) * Math.sin(l), Math.sin(p)];
-      assert.ok(dot(up, v.normal) > Math.cos(2 * Math.PI / 180), `${where}: normal ${v.normal} at (${v.lon}, ${v.lat})`);
-    }
+    const [west, south] = world.bounds;
+    // Far away at a coarse level, just off the world's south-west corner, and at the deepest level.
+    const away = [[3, 0, 0], Object.values(tileAt(MID, west - 0.5, south - 0.5)), Object.values(tileAt(layer.maxzoom, west - 0.2, south))];
+    for (const coords of away) await checkEllipsoidTile(await fetchTile(...coords));
   });
 });
+
+/** The ellipsoid under an all-water mask: heights 0, the ellipsoid's normals, a valid header. */
+async function checkEllipsoidTile({ tile, z, x, y }) {
+  const where = `${z}/${x}/${y}`;
+  assert.equal(tile.header.minHeight, 0, where);
+  assert.equal(tile.header.maxHeight, 0, where);
+  assert.ok(tile.vertices.every((v) => v.height === 0), where);
+  assert.ok(tile.waterMask.every((b) => b === 255), `${where}: not all water`);
+  checkHeader(tile, where, 0.01, 0);
+  checkMesh(tile, where);
+  for (const v of tile.vertices) {
+    const [l, p] = [v.lon * Math.PI / 180, v.lat * Math.PI / 180];
+    const up = [Math.cos(p) * Math.cos(l), Math.cos(p) * Math.sin(l), Math.sin(p)];
+    assert.ok(dot(up, v.normal) > Math.cos(2 * Math.PI / 180), `${where}: normal ${v.normal} at (${v.lon}, ${v.lat})`);
+  }
+}
 
 describe('the checks themselves', () => {
   test('accept a tile of Cesium World Terrain at its own coordinates, and reject it elsewhere', () => {
@@ -435,7 +450,17 @@ function checkHeader(tile, where, slack = 0.01, reach = Infinity) {
   const hop = [h.horizonOcclusionPointX, h.horizonOcclusionPointY, h.horizonOcclusionPointZ];
   const magnitude = norm(hop);
   const direction = hop.map((c) => c / magnitude);
-  const needed = Math.max(...points.map((p) => occlusionMagnitude(scaled(p), direction)));
+  const candidates = points.map((p) => occlusionMagnitude(scaled(p, h.minHeight), direction));
+  if (candidates.some((m) => !(m > 0) || !Number.isFinite(m) || m > 1e6)) {
+    // No point along this direction sees the whole tile (one as wide as a hemisphere): Cesium's
+    // own construction gives none. Then a point far out towards the tile, which only the far
+    // side of the globe hides, is the one that culls nothing visible.
+    const towards = scaled(tileCentre);
+    assert.ok(magnitude >= 1e3 && dot(direction, towards) / norm(towards) > 0.5,
+      `${where}: no horizon point can hide this tile's vertices, yet it is at magnitude ${magnitude}`);
+    return;
+  }
+  const needed = Math.max(...candidates);
   // Relative 1e-7 ≈ 0.6 m at the Earth's radius: the decoded vertices are quantised.
   assert.ok(magnitude >= needed * (1 - 1e-7), `${where}: the horizon occlusion point (magnitude ${magnitude}) hides vertices that need ${needed}`);
   assert.ok(magnitude <= needed * (1 + 1e-4), `${where}: the horizon occlusion point (magnitude ${magnitude}) is farther than needed (${needed}): tiles drawn that could be culled`);

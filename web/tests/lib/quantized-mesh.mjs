@@ -62,8 +62,16 @@ export function occlusionMagnitude(position, direction) {
   return 1 / (cosAlpha * cosBeta - sinAlpha * sinBeta);
 }
 
-/** ECEF → the ellipsoid-scaled space (divided by the radii) of the horizon occlusion point. */
-export const scaled = (p) => [p[0] / WGS84.a, p[1] / WGS84.a, p[2] / WGS84.b];
+/**
+ * ECEF → the ellipsoid-scaled space (divided by the radii) of the horizon occlusion point. For a
+ * tile that reaches below the ellipsoid (minimumHeight < 0), CesiumJS tests the point against
+ * the ellipsoid shrunk by that height (EllipsoidalOccluder's
+ * isScaledSpacePointVisiblePossiblyUnderEllipsoid), so it is that ellipsoid's scaled space.
+ */
+export function scaled(p, minimumHeight = 0) {
+  const shrink = minimumHeight < 0 && WGS84.b > -minimumHeight ? minimumHeight : 0;
+  return [p[0] / (WGS84.a + shrink), p[1] / (WGS84.a + shrink), p[2] / (WGS84.b + shrink)];
+}
 
 /**
  * A .terrain body decoded by @here/quantized-mesh-decoder, with each vertex's longitude,
