@@ -35,13 +35,14 @@ using Clock = std::chrono::steady_clock;
 constexpr const char* kExportUsage =
     "usage: strahler export WORLD.world --zooms A-B -o FILE.pmtiles|FILE.mbtiles\n"
     "                       [--format pmtiles|mbtiles] [--scheme web] [--bbox W,S,E,N]\n"
-    "                       [--tile png|terrarium|png16] [--size N] [--threads N]\n"
+    "                       [--tile png|terrarium|png16|relief] [--size N] [--threads N]\n"
     "                       [--max-tiles N] [--quiet]\n"
     "Writes every Web Mercator tile of the world in zooms A..B (0..18) that touches its bounds\n"
     "(and --bbox, degrees) to a PMTiles v3 or MBTiles 1.3 archive, byte for byte the tiles\n"
     "`strahler serve` sends. --format defaults to the extension of FILE. png is Terrain-RGB\n"
-    "(the default); N: pixels per side, 16..1024, default 256. --threads: default all cores;\n"
-    "the archive is the same for any count. Identical tiles (the open sea) are stored once.\n"
+    "(the default), relief a colour-relief picture; N: pixels per side, 16..1024, default\n"
+    "256. --threads: default all cores; the archive is the same for any count. Identical\n"
+    "tiles (the open sea) are stored once.\n"
     "More than --max-tiles tiles (default 5000000) are refused. The archive is written to\n"
     "FILE.tmp.PID and renamed when complete; on an error or SIGINT/SIGTERM nothing is left.\n";
 
@@ -83,11 +84,12 @@ base::Result<ArchiveKind> archiveKind(const CliArgs& args, const std::string& ou
 
 base::Result<TileFormat> archiveTileFormat(const std::string& name) {
   STRAHLER_ASSIGN_OR_RETURN(const TileFormat f, parseTileFormat(name));
-  if (f != TileFormat::kTerrainRgb && f != TileFormat::kTerrarium && f != TileFormat::kPng16)
-    return makeError(
-        ErrorCode::kInvalidInput,
-        "--tile " + name +
-            ": archives hold PNG tiles here: use png (Terrain-RGB), terrarium or png16");
+  if (f != TileFormat::kTerrainRgb && f != TileFormat::kTerrarium && f != TileFormat::kPng16 &&
+      f != TileFormat::kRelief)
+    return makeError(ErrorCode::kInvalidInput,
+                     "--tile " + name +
+                         ": archives hold PNG tiles here: use png (Terrain-RGB), terrarium, png16 "
+                         "or relief");
   return f;
 }
 
@@ -283,6 +285,9 @@ archive::ArchiveMetadata metadataFor(const construction::WorldData& world, const
     break;
   case TileFormat::kPng16:
     m.description = "strahler terrain (16-bit grey PNG: height = value * 0.1 - 1000 m)";
+    break;
+  case TileFormat::kRelief: // a picture, not heights: no encoding
+    m.description = "strahler terrain (colour relief: height tint times hillshade)";
     break;
   default:
     m.encoding = "mapbox";

@@ -67,7 +67,8 @@ http::Response indexPage(const std::string& webRoot, const std::vector<std::stri
   r.body = "<!doctype html><html><head><meta charset=\"utf-8\"><title>strahler</title></head><body>"
            "<h1>strahler tile server</h1><p>Worlds:</p><ul>" +
            list +
-           "</ul><p>Tiles: <code>/worlds/{id}/tiles/{z}/{x}/{y}.{png|png16|tif|exr|drc|glb}</code> "
+           "</ul><p>Tiles: "
+           "<code>/worlds/{id}/tiles/{z}/{x}/{y}.{png|png16|tif|exr|drc|glb|relief}</code> "
            "(Web Mercator), "
            "<code>/worlds/{id}/local/{z}/{x}/{y}.{ext}</code> (local quadtree). "
            "<a href=\"/health\">health</a>, <a href=\"/metrics\">metrics</a>.</p></body></html>";

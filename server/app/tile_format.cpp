@@ -19,9 +19,12 @@ base::Result<TileFormat> parseTileFormat(const std::string& name) {
     return TileFormat::kGlb;
   if (name == "terrain")
     return TileFormat::kQuantizedMesh;
-  return base::makeError(base::ErrorCode::kInvalidInput,
-                         "unknown tile format '" + name +
-                             "' (use png, terrarium, png16, tif, exr, drc, glb or terrain)");
+  if (name == "relief")
+    return TileFormat::kRelief;
+  return base::makeError(
+      base::ErrorCode::kInvalidInput,
+      "unknown tile format '" + name +
+          "' (use png, terrarium, png16, tif, exr, drc, glb, relief or terrain)");
 }
 
 const char* canonicalFormatName(TileFormat format) noexcept {
@@ -42,6 +45,8 @@ const char* canonicalFormatName(TileFormat format) noexcept {
     return "glb";
   case TileFormat::kQuantizedMesh:
     return "terrain";
+  case TileFormat::kRelief:
+    return "relief";
   }
   return "png";
 }
@@ -49,6 +54,8 @@ const char* canonicalFormatName(TileFormat format) noexcept {
 TileKind tileKind(TileFormat format) noexcept {
   if (format == TileFormat::kQuantizedMesh)
     return TileKind::kTerrain;
+  if (format == TileFormat::kRelief)
+    return TileKind::kRelief;
   return format == TileFormat::kDraco || format == TileFormat::kGlb ? TileKind::kMesh
                                                                     : TileKind::kHeightmap;
 }

@@ -17,6 +17,7 @@ enum class TileFormat {
   kExr,
   kDraco,
   kGlb,
+  kRelief,        ///< A colour-relief picture (relief).
   kQuantizedMesh, ///< Cesium's quantized-mesh-1.0 (.terrain), geographic pyramid only.
 };
 
@@ -25,6 +26,7 @@ enum class TileFormat {
 enum class TileKind {
   kHeightmap, ///< A raster of heights (png, terrarium, png16, tif, exr).
   kMesh,      ///< A triangle mesh with skirts (drc, glb).
+  kRelief,    ///< A colour-relief picture: hypsometric tint × hillshade (relief).
   kTerrain,   ///< A Cesium terrain tile: adaptive mesh, normals, water mask, availability.
 };
 
@@ -44,10 +46,10 @@ struct TileSizeRange {
 };
 
 /// Parses a format name as used in URLs and on the command line: png (Terrain-RGB),
-/// terrarium, png16, tif, exr, drc, glb, terrain (quantized-mesh).
+/// terrarium, png16, tif, exr, drc, glb, relief (colour relief), terrain (quantized-mesh).
 base::Result<TileFormat> parseTileFormat(const std::string& name);
 
-/// The name of `format` in URLs (png, terrarium, png16, tif, exr, drc, glb, terrain).
+/// The name of `format` in URLs (png, terrarium, png16, tif, exr, drc, glb, relief, terrain).
 const char* canonicalFormatName(TileFormat format) noexcept;
 
 /// The kind of tile `format` encodes.

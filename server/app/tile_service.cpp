@@ -3,6 +3,7 @@
 #include "cesium_terrain_renderer.h"
 #include "heightmap_renderer.h"
 #include "mesh_renderer.h"
+#include "relief_renderer.h"
 
 #include <string>
 
@@ -35,6 +36,7 @@ TileService::TileService(construction::WorldData world)
           geometry::LocalProjection(world_.data().projectionCenter.x,
                                     world_.data().projectionCenter.y),
           CesiumAvailability(worldBounds(world_.data()), geographic_.maxZoom()));
+  renderers_[static_cast<std::size_t>(TileKind::kRelief)] = std::make_unique<ReliefRenderer>();
 }
 
 TileService::~TileService() = default;

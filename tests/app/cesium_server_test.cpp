@@ -12,6 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 
@@ -180,6 +183,27 @@ TEST(CesiumTerrainServer, ExtensionsAndGzipAreNegotiatedAndCachedApart) {
   const HttpResponse again = request(s.port(), t.path() + "?extensions=watermask", "GET",
                                      "If-None-Match: " + native.headers.at("etag") + "\r\n");
   EXPECT_EQ(again.status, 304);
+}
+
+// tests/data/golden/island_cesium_12.terrain: the island's centre tile at level 12 with every
+// extension, as served; STRAHLER_UPDATE_GOLDEN=1 rewrites it. Any change to the evaluation, the
+// mesher or the format shows here.
+TEST(CesiumTerrainServer, TheIslandsCentreTileIsTheGoldenOne) {
+  Running s;
+  const HttpResponse r = request(s.port(), tileOfCentre(12).path(), "GET", kCesiumJsAccept);
+  ASSERT_EQ(r.status, 200);
+  const std::filesystem::path path =
+      std::filesystem::path(STRAHLER_TEST_DATA_DIR) / "golden" / "island_cesium_12.terrain";
+  if (const char* update = std::getenv("STRAHLER_UPDATE_GOLDEN");
+      update != nullptr && std::string(update) == "1") {
+    std::ofstream(path, std::ios::binary) << r.body;
+    GTEST_SKIP() << "rewrote " << path;
+  }
+  std::ifstream in(path, std::ios::binary);
+  const std::string golden{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  ASSERT_FALSE(golden.empty()) << path;
+  EXPECT_TRUE(r.body == golden) << "the tile differs from " << path << " (" << r.body.size()
+                                << " bytes against " << golden.size() << ")";
 }
 
 TEST(CesiumTerrainServer, BadTerrainRequestsGetDefiniteAnswers) {

@@ -99,5 +99,30 @@ TEST(TileFormat, EachFormatHasItsKindAndTheKindItsSizes) {
   EXPECT_EQ(mesh.defaultSize, TileSizes::kMeshDefault);
 }
 
+TEST(TileFormat, ReliefIsARasterPictureOfItsOwnKind) {
+  ASSERT_TRUE(parseTileFormat("relief").ok());
+  EXPECT_EQ(parseTileFormat("relief").value(), TileFormat::kRelief);
+  EXPECT_STREQ(canonicalFormatName(TileFormat::kRelief), "relief");
+  EXPECT_EQ(tileKind(TileFormat::kRelief), TileKind::kRelief);
+  EXPECT_FALSE(isMeshFormat(TileFormat::kRelief));
+  const TileSizeRange range = tileSizeRange(TileKind::kRelief);
+  EXPECT_EQ(range.min, TileSizes::kRasterMin);
+  EXPECT_EQ(range.max, TileSizes::kRasterMax);
+  EXPECT_EQ(range.defaultSize, TileSizes::kRasterDefault);
+  // One spelling per tile, the default size written or not; local tiles too.
+  const std::string web = "/worlds/island/tiles/12/1736/1494";
+  EXPECT_EQ(keyOf(web + ".relief"), "island|tiles|12|1736|1494|relief|0");
+  EXPECT_EQ(keyOf(web + ".relief?size=256"), "island|tiles|12|1736|1494|relief|0");
+  EXPECT_EQ(keyOf(web + ".relief?size=512"), "island|tiles|12|1736|1494|relief|512");
+  EXPECT_EQ(keyOf("/worlds/island/local/2/1/2.relief"), "island|local|2|1|2|relief|0");
+  // encoding= belongs to png tiles; sizes are the rasters'.
+  for (const char* bad : {".relief?encoding=terrarium", ".relief?size=8", ".relief?size=2048"}) {
+    const auto parsed = parseTarget(web + bad);
+    ASSERT_TRUE(parsed.ok()) << bad;
+    const auto& s = parsed.value().segments;
+    EXPECT_FALSE(parseTileRoute(s[1], s, parsed.value().query).ok()) << bad;
+  }
+}
+
 } // namespace
 } // namespace strahler::app

@@ -135,6 +135,28 @@ TEST(ExportCommand, ArchiveTilesAreTheBytesTheServerSends) {
   }
 }
 
+TEST(ExportCommand, ArchivesColourReliefTilesAsStrahlerTileWritesThem) {
+  const fs::path dir = outputDir("relief");
+  const fs::path out = dir / "a.pmtiles";
+  const ProcessRun run = strahler("export " + islandWorld().string() +
+                                  " --zooms 11-12 --tile relief -o " + out.string());
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const std::string archive = readWholeFile(out);
+  const pm::Header h = strahler::test_support::valueOf(pm::decodeHeader(archive));
+  EXPECT_EQ(h.tileType, pm::TileType::kPng);
+  const std::string metadata = strahler::test_support::valueOf(
+      pm::decompress(archive.substr(h.metadataOffset, h.metadataLength), h.internalCompression));
+  EXPECT_NE(metadata.find("colour relief"), std::string::npos) << metadata;
+  EXPECT_EQ(metadata.find("\"encoding\""), std::string::npos) << "not a heightmap: " << metadata;
+  const fs::path tile = dir / "t.png";
+  const ProcessRun one = strahler("tile " + islandWorld().string() +
+                                  " --z 12 --x 1736 --y 1494 --format relief -o " + tile.string());
+  ASSERT_EQ(one.exitCode, 0) << one.err;
+  const std::string stored = pmtilesTile(archive, 12, 1736, 1494);
+  EXPECT_FALSE(stored.empty());
+  EXPECT_TRUE(stored == readWholeFile(tile)) << "archive and strahler tile bytes differ";
+}
+
 /// Starts an export that runs for many seconds, sends `signal` once its temporary file exists,
 /// and checks that the process dies by it leaving no file behind.
 void interruptExport(int signal, const std::string& ext) {

@@ -486,7 +486,7 @@ TEST(TileCommand, WritesEveryFormatAndRejectsBadRequests) {
   const std::string base = "tile " + world.string() + " ";
   const std::pair<const char*, const char*> formats[] = {
       {"png", "\x89PNG"}, {"terrarium", "\x89PNG"}, {"png16", "\x89PNG"}, {"tif", "II*"},
-      {"exr", "v/1\x01"}, {"drc", "DRACO"},         {"glb", "glTF"}};
+      {"exr", "v/1\x01"}, {"drc", "DRACO"},         {"glb", "glTF"},      {"relief", "\x89PNG"}};
   for (const auto& [format, magic] : formats) {
     const fs::path out = scratchDir() / (std::string("t.") + format);
     const ProcessRun run = strahler(base + "--scheme local --z 2 --x 1 --y 2 --format " + format +

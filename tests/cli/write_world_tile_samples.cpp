@@ -3,12 +3,15 @@
 // decoders in tests/node check our bytes against the terrain itself:
 //   <dir>/heightmaps/<name>.<format>.png + .json   (check_heightmaps.mjs)
 //   <dir>/meshes/<name>.drc, .glb + .json          (check_draco.mjs, validate_glb.mjs)
+//   <dir>/relief/<name>.png + .rgb + .json         (check_relief.mjs: colour relief, the .rgb
+//                                                   pixels shaded from World::height)
 #include "mesh_renderer.h"
 #include "test_worlds.h"
 #include "tile_service.h"
 
 #include "strahler/construction/world_builder.h"
 #include "strahler/encoding/mesh.h"
+#include "strahler/render/shaded_relief.h"
 
 #include <charconv>
 #include <cstdio>
@@ -101,6 +104,26 @@ bool meshes(const app::TileService& service, const fs::path& dir, const tiling::
          write(dir / (name + ".glb"), glb.value().bytes) && write(dir / (name + ".json"), json);
 }
 
+/// A colour-relief tile and the pixels render::shadeRelief makes of the whole-world
+/// evaluator's heights at its bordered samples; `east` names its east neighbour's sample, if
+/// written, for the seam check.
+bool relief(const app::TileService& service, const fs::path& dir, tiling::SchemeKind scheme,
+            const tiling::TileId& tile, int size, const std::string& name,
+            const std::string& east = "") {
+  const tiling::SampleGrid grid = service.scheme(scheme).borderedRasterGrid(tile, size);
+  const image::RgbImage expected =
+      render::shadeRelief(reference(service.world(), grid), size, size, grid.rowSpacing);
+  auto rendered = service.render({scheme, tile, app::TileFormat::kRelief, {size}, {}});
+  if (!rendered)
+    return false;
+  const std::string json = "{\"width\":" + std::to_string(size) +
+                           ",\"height\":" + std::to_string(size) + ",\"east\":\"" + east + "\"}\n";
+  return write(dir / (name + ".png"), rendered.value().bytes) &&
+         write(dir / (name + ".rgb"),
+               std::string(expected.pixels.begin(), expected.pixels.end())) &&
+         write(dir / (name + ".json"), json);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -112,14 +135,21 @@ int main(int argc, char** argv) {
   fs::remove_all(dir);
   fs::create_directories(dir / "heightmaps");
   fs::create_directories(dir / "meshes");
+  fs::create_directories(dir / "relief");
   const app::TileService service(
       construction::generateWorldData(test_support::defaultIslandSpec(), "samples").value());
   // Web tiles over the island's centre at a coarse and a fine zoom; local tiles inland and at the
   // coast.
-  const bool ok = heightmaps(service, dir / "heightmaps", {10, 434, 373}, "island-z10") &&
-                  heightmaps(service, dir / "heightmaps", {13, 3477, 2990}, "island-z13") &&
-                  meshes(service, dir / "meshes", {4, 7, 8}, "local-z4-7-8") &&
-                  meshes(service, dir / "meshes", {3, 0, 3}, "local-z3-0-3");
+  const bool ok =
+      heightmaps(service, dir / "heightmaps", {10, 434, 373}, "island-z10") &&
+      heightmaps(service, dir / "heightmaps", {13, 3477, 2990}, "island-z13") &&
+      meshes(service, dir / "meshes", {4, 7, 8}, "local-z4-7-8") &&
+      meshes(service, dir / "meshes", {3, 0, 3}, "local-z3-0-3") &&
+      relief(service, dir / "relief", tiling::SchemeKind::kWebMercator, {12, 1736, 1494}, 256,
+             "island-z12-1736", "island-z12-1737") &&
+      relief(service, dir / "relief", tiling::SchemeKind::kWebMercator, {12, 1737, 1494}, 256,
+             "island-z12-1737") &&
+      relief(service, dir / "relief", tiling::SchemeKind::kLocal, {2, 1, 2}, 64, "local-z2-1-2");
   if (!ok) {
     std::fprintf(stderr, "write_world_tile_samples: could not render or write a tile\n");
     return 1;

@@ -21,28 +21,31 @@ Ecef cross(const Ecef& p, const Ecef& q) noexcept {
 
 } // namespace
 
-Ecef toEcef(double longitude, double latitude, double height) noexcept {
-  const double sinLat = std::sin(latitude);
-  const double cosLat = std::cos(latitude);
+SinCos SinCos::of(double radians) noexcept {
+  return {std::sin(radians), std::cos(radians)};
+}
+
+Ecef toEcef(SinCos longitude, SinCos latitude, double height) noexcept {
   const double n = primeVerticalRadius(latitude);
-  const double horizontal = (n + height) * cosLat;
-  return {horizontal * std::cos(longitude), horizontal * std::sin(longitude),
-          (n * (1.0 - kEccentricitySquared) + height) * sinLat};
+  const double horizontal = (n + height) * latitude.cos;
+  return {horizontal * longitude.cos, horizontal * longitude.sin,
+          (n * (1.0 - kEccentricitySquared) + height) * latitude.sin};
 }
 
-Ecef geodeticUp(double longitude, double latitude) noexcept {
-  const double cosLat = std::cos(latitude);
-  return {cosLat * std::cos(longitude), cosLat * std::sin(longitude), std::sin(latitude)};
+Ecef toEcef(double longitude, double latitude, double height) noexcept {
+  return toEcef(SinCos::of(longitude), SinCos::of(latitude), height);
 }
 
-double primeVerticalRadius(double latitude) noexcept {
-  const double s = std::sin(latitude);
-  return kSemiMajorAxis / std::sqrt(1.0 - kEccentricitySquared * s * s);
+Ecef geodeticUp(SinCos longitude, SinCos latitude) noexcept {
+  return {latitude.cos * longitude.cos, latitude.cos * longitude.sin, latitude.sin};
 }
 
-double meridionalRadius(double latitude) noexcept {
-  const double s = std::sin(latitude);
-  const double w = 1.0 - kEccentricitySquared * s * s;
+double primeVerticalRadius(SinCos latitude) noexcept {
+  return kSemiMajorAxis / std::sqrt(1.0 - kEccentricitySquared * latitude.sin * latitude.sin);
+}
+
+double meridionalRadius(SinCos latitude) noexcept {
+  const double w = 1.0 - kEccentricitySquared * latitude.sin * latitude.sin;
   return kSemiMajorAxis * (1.0 - kEccentricitySquared) / (w * std::sqrt(w));
 }
 

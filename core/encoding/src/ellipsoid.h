@@ -10,22 +10,32 @@ namespace strahler::encoding::wgs84 {
 /// pole), metres.
 using Ecef = std::array<double, 3>;
 
-inline constexpr double kSemiMajorAxis = 6378137.0;                           ///< a, m.
-inline constexpr double kFlattening = 1.0 / 298.257223563;                     ///< f.
-inline constexpr double kSemiMinorAxis = kSemiMajorAxis * (1.0 - kFlattening); ///< b, m.
+inline constexpr double kSemiMajorAxis = 6378137.0;                               ///< a, m.
+inline constexpr double kFlattening = 1.0 / 298.257223563;                        ///< f.
+inline constexpr double kSemiMinorAxis = kSemiMajorAxis * (1.0 - kFlattening);    ///< b, m.
 inline constexpr double kEccentricitySquared = kFlattening * (2.0 - kFlattening); ///< e².
 
-/// The ECEF position of longitude/latitude (radians) at `height` m above the ellipsoid.
+/// An angle's sine and cosine, computed once for a grid row or column.
+struct SinCos {
+  double sin = 0.0;
+  double cos = 1.0;
+  /// Of an angle in radians.
+  static SinCos of(double radians) noexcept;
+};
+
+/// The ECEF position of a longitude/latitude at `height` m above the ellipsoid.
+Ecef toEcef(SinCos longitude, SinCos latitude, double height) noexcept;
+/// The same, angles in radians.
 Ecef toEcef(double longitude, double latitude, double height) noexcept;
 
-/// The unit outward normal of the ellipsoid (geodetic up) at longitude/latitude, radians.
-Ecef geodeticUp(double longitude, double latitude) noexcept;
+/// The unit outward normal of the ellipsoid (geodetic up) at a longitude/latitude.
+Ecef geodeticUp(SinCos longitude, SinCos latitude) noexcept;
 
 /// Radius of curvature in the prime vertical, N(φ), m (east-west: a parallel's radius is N·cosφ).
-double primeVerticalRadius(double latitude) noexcept;
+double primeVerticalRadius(SinCos latitude) noexcept;
 
 /// Meridional radius of curvature, M(φ), m (north-south).
-double meridionalRadius(double latitude) noexcept;
+double meridionalRadius(SinCos latitude) noexcept;
 
 /// A sphere enclosing every point: the centre of their axis-aligned box, radius to the
 /// farthest point.

@@ -24,6 +24,7 @@ using wgs84::Ecef;
 
 constexpr int kMaxSamples = 1025;
 constexpr int kEllipsoidSamples = 17;
+constexpr double kMaxAbsHeight = 1.0e6;
 constexpr std::size_t kWaterMaskBytes = 256 * 256;
 constexpr double kDegrees = std::numbers::pi / 180.0;
 
@@ -69,9 +70,13 @@ base::Status validateGrid(const QuantizedMeshGrid& grid) {
   if (grid.heights.size() != side * side)
     return invalid("heights must hold (samples + 2)^2 = " + std::to_string(side * side) +
                    " values, not " + std::to_string(grid.heights.size()));
-  for (std::size_t k = 0; k < grid.heights.size(); ++k)
+  for (std::size_t k = 0; k < grid.heights.size(); ++k) {
     if (!std::isfinite(grid.heights[k]))
       return invalid("height " + std::to_string(k) + " is not finite");
+    // Far beyond any terrain; keeps the float32 header and the ECEF arithmetic exact enough.
+    if (std::fabs(grid.heights[k]) > kMaxAbsHeight)
+      return invalid("height " + std::to_string(k) + " is outside [-1e6, 1e6] m");
+  }
   return validateRect(grid.rect);
 }
 
@@ -114,19 +119,27 @@ std::vector<double> innerHeights(const QuantizedMeshGrid& grid) {
   return inner;
 }
 
+std::vector<wgs84::SinCos> sinCosOf(const std::vector<double>& angles) {
+  std::vector<wgs84::SinCos> result;
+  result.reserve(angles.size());
+  for (double angle : angles)
+    result.push_back(wgs84::SinCos::of(angle));
+  return result;
+}
+
 /// Unit surface normals in ECEF from central differences over the bordered grid, in metres on
 /// the ellipsoid (east spacing Δλ·N(φ)·cosφ, north spacing Δφ·M(φ)) in the local east-north-up
 /// frame of the geodetic normal.
 class NormalSampler {
 public:
-  NormalSampler(const QuantizedMeshGrid& grid, std::span<const double> longitudes,
-                std::span<const double> latitudes)
+  NormalSampler(const QuantizedMeshGrid& grid, std::span<const wgs84::SinCos> longitudes,
+                std::span<const wgs84::SinCos> latitudes)
       : grid_(grid), longitudes_(longitudes), latitudes_(latitudes) {
     const double cells = grid.samples - 1;
     const double dLon = (grid.rect.east - grid.rect.west) * kDegrees / cells;
     const double dLat = (grid.rect.north - grid.rect.south) * kDegrees / cells;
-    for (double phi : latitudes) {
-      eastSpan_.push_back(2.0 * dLon * wgs84::primeVerticalRadius(phi) * std::cos(phi));
+    for (const wgs84::SinCos& phi : latitudes) {
+      eastSpan_.push_back(2.0 * dLon * wgs84::primeVerticalRadius(phi) * phi.cos);
       northSpan_.push_back(2.0 * dLat * wgs84::meridionalRadius(phi));
     }
   }
@@ -138,8 +151,8 @@ public:
     const double gy = (at(i, j + 1) - at(i, j - 1)) / northSpan_[uj];
     const double inv = 1.0 / std::sqrt(gx * gx + gy * gy + 1.0);
     const double e = -gx * inv, n = -gy * inv, u = inv;
-    const double sl = std::sin(longitudes_[ui]), cl = std::cos(longitudes_[ui]);
-    const double sp = std::sin(latitudes_[uj]), cp = std::cos(latitudes_[uj]);
+    const double sl = longitudes_[ui].sin, cl = longitudes_[ui].cos;
+    const double sp = latitudes_[uj].sin, cp = latitudes_[uj].cos;
     return {-sl * e - sp * cl * n + cp * cl * u, cl * e - sp * sl * n + cp * sl * u,
             cp * n + sp * u};
   }
@@ -151,7 +164,7 @@ private:
   }
 
   const QuantizedMeshGrid& grid_;
-  std::span<const double> longitudes_, latitudes_;
+  std::span<const wgs84::SinCos> longitudes_, latitudes_;
   std::vector<double> eastSpan_, northSpan_;
 };
 
@@ -164,9 +177,8 @@ struct OrderedMesh {
 
 OrderedMesh orderByFirstUse(const std::vector<std::uint32_t>& triangles, int samples) {
   constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
-  std::vector<std::uint32_t> vertexOf(static_cast<std::size_t>(samples) *
-                                          static_cast<std::size_t>(samples),
-                                      kUnused);
+  std::vector<std::uint32_t> vertexOf(
+      static_cast<std::size_t>(samples) * static_cast<std::size_t>(samples), kUnused);
   OrderedMesh ordered;
   ordered.triangles.reserve(triangles.size());
   for (std::uint32_t sample : triangles) {
@@ -199,24 +211,25 @@ base::Result<std::string> encodeQuantizedMesh(const QuantizedMeshGrid& grid,
   const std::vector<double> longitudes = sampleAngles(grid.rect.west, grid.rect.east, n);
   const std::vector<double> latitudes = sampleAngles(grid.rect.south, grid.rect.north, n);
   const std::vector<double> heights = innerHeights(grid);
-  const rtin::Mesh rtinMesh =
-      rtin::triangulate({n, heights, longitudes, latitudes},
-                        {options.maxError, std::sqrt(8.0 * options.maxError / wgs84::kSemiMajorAxis)});
-  const OrderedMesh mesh = orderByFirstUse(rtinMesh.triangles, n);
+  const rtin::Mesh rtinMesh = rtin::triangulate(
+      {n, heights, longitudes, latitudes},
+      {options.maxError, std::sqrt(8.0 * options.maxError / wgs84::kSemiMajorAxis)});
+  OrderedMesh mesh = orderByFirstUse(rtinMesh.triangles, n);
 
   qm::TileData tile;
   tile.rect = grid.rect;
   tile.samples = n;
-  tile.triangles = mesh.triangles;
+  tile.triangles = std::move(mesh.triangles);
   tile.vertices.reserve(mesh.samples.size());
+  const std::vector<wgs84::SinCos> lonTrig = sinCosOf(longitudes), latTrig = sinCosOf(latitudes);
   const auto un = static_cast<std::uint32_t>(n);
   for (std::uint32_t s : mesh.samples) {
     const std::uint32_t i = s % un, j = s / un;
-    const Ecef position = wgs84::toEcef(longitudes[i], latitudes[j], heights[s]);
+    const Ecef position = wgs84::toEcef(lonTrig[i], latTrig[j], heights[s]);
     tile.vertices.push_back({static_cast<int>(i), static_cast<int>(j), heights[s], position});
   }
   if (options.normals) {
-    const NormalSampler normalAt(grid, longitudes, latitudes);
+    const NormalSampler normalAt(grid, lonTrig, latTrig);
     tile.normals.reserve(2 * tile.vertices.size());
     for (const qm::Vertex& v : tile.vertices) {
       const auto oct = octEncode(normalAt(v.column, v.row));

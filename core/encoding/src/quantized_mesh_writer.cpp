@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -30,14 +31,17 @@ public:
   explicit ByteWriter(std::size_t reserve) { bytes_.reserve(reserve); }
 
   template <class T> void put(T value) {
-    using Bits = std::conditional_t<sizeof(T) == 8, std::uint64_t,
-                                    std::conditional_t<sizeof(T) == 4, std::uint32_t,
-                                                       std::conditional_t<sizeof(T) == 2,
-                                                                          std::uint16_t,
-                                                                          std::uint8_t>>>;
-    auto bits = std::bit_cast<Bits>(value);
-    for (std::size_t k = 0; k < sizeof(T); ++k, bits = static_cast<Bits>(bits >> 8))
-      bytes_.push_back(static_cast<char>(bits & 0xFFu));
+    static_assert(std::endian::native == std::endian::little, "writes host order");
+    const std::size_t at = bytes_.size();
+    bytes_.resize(at + sizeof(T));
+    std::memcpy(bytes_.data() + at, &value, sizeof(T));
+  }
+
+  /// Values of one type in a row, as `put` would write them one by one.
+  template <class T> void putAll(std::span<const T> values) {
+    const std::size_t at = bytes_.size();
+    bytes_.resize(at + values.size_bytes());
+    std::memcpy(bytes_.data() + at, values.data(), values.size_bytes());
   }
 
   void putBytes(std::span<const std::uint8_t> data) {
@@ -85,9 +89,9 @@ Ecef scaledDirection(const Ecef& direction) {
 
 void writeHeader(ByteWriter& out, const TileData& tile, float minHeight, float maxHeight) {
   const GeographicRect& r = tile.rect;
-  const Ecef centre = wgs84::toEcef(0.5 * (r.west + r.east) * kDegrees,
-                                    0.5 * (r.south + r.north) * kDegrees,
-                                    0.5 * (static_cast<double>(minHeight) + maxHeight));
+  const Ecef centre =
+      wgs84::toEcef(0.5 * (r.west + r.east) * kDegrees, 0.5 * (r.south + r.north) * kDegrees,
+                    0.5 * (static_cast<double>(minHeight) + maxHeight));
   std::vector<Ecef> positions;
   positions.reserve(tile.vertices.size());
   for (const Vertex& v : tile.vertices)
@@ -119,41 +123,45 @@ int quantizeGrid(int k, int cells) {
   return (2 * k * kQuantizedMax + cells) / (2 * cells);
 }
 
+/// One of the u, v and height arrays: zig-zag coded differences of consecutive values.
+template <class Quantize>
+void writeDeltas(ByteWriter& out, const std::vector<Vertex>& vertices, Quantize quantize) {
+  std::vector<std::uint16_t> codes(vertices.size());
+  int previous = 0;
+  for (std::size_t k = 0; k < vertices.size(); ++k) {
+    const int value = quantize(vertices[k]);
+    codes[k] = zigZag(value - previous);
+    previous = value;
+  }
+  out.putAll(std::span<const std::uint16_t>(codes));
+}
+
 void writeVertices(ByteWriter& out, const TileData& tile, float minHeight, float maxHeight) {
   const int cells = tile.samples - 1;
   out.put(static_cast<std::uint32_t>(tile.vertices.size()));
-  int previous = 0;
-  for (const Vertex& v : tile.vertices) {
-    const int u = quantizeGrid(v.column, cells);
-    out.put(zigZag(u - previous));
-    previous = u;
-  }
-  previous = 0;
-  for (const Vertex& v : tile.vertices) {
-    const int q = quantizeGrid(v.row, cells);
-    out.put(zigZag(q - previous));
-    previous = q;
-  }
-  previous = 0;
+  writeDeltas(out, tile.vertices,
+              [cells](const Vertex& v) { return quantizeGrid(v.column, cells); });
+  writeDeltas(out, tile.vertices, [cells](const Vertex& v) { return quantizeGrid(v.row, cells); });
   const double range = static_cast<double>(maxHeight) - minHeight;
-  for (const Vertex& v : tile.vertices) {
+  writeDeltas(out, tile.vertices, [&](const Vertex& v) {
     const double t = range > 0.0 ? (v.height - minHeight) / range : 0.0;
-    const int h = std::clamp(static_cast<int>(std::lround(t * kQuantizedMax)), 0, kQuantizedMax);
-    out.put(zigZag(h - previous));
-    previous = h;
-  }
+    return std::clamp(static_cast<int>(std::floor(t * kQuantizedMax + 0.5)), 0, kQuantizedMax);
+  });
 }
 
 template <class Index> void writeIndices(ByteWriter& out, const TileData& tile) {
   out.padTo(sizeof(Index));
   out.put(static_cast<std::uint32_t>(tile.triangles.size() / 3));
   // High-water mark: each index as the distance below the highest index so far plus one.
+  std::vector<Index> codes(tile.triangles.size());
   std::uint32_t highest = 0;
-  for (std::uint32_t index : tile.triangles) {
-    out.put(static_cast<Index>(highest - index));
+  for (std::size_t k = 0; k < codes.size(); ++k) {
+    const std::uint32_t index = tile.triangles[k];
+    codes[k] = static_cast<Index>(highest - index);
     if (index == highest)
       ++highest;
   }
+  out.putAll(std::span<const Index>(codes));
   const int last = tile.samples - 1;
   const auto edge = [&](auto onEdge, auto along) {
     std::vector<std::uint32_t> list;
@@ -164,8 +172,8 @@ template <class Index> void writeIndices(ByteWriter& out, const TileData& tile) 
       return along(tile.vertices[p]) < along(tile.vertices[q]);
     });
     out.put(static_cast<std::uint32_t>(list.size()));
-    for (std::uint32_t index : list)
-      out.put(static_cast<Index>(index));
+    const std::vector<Index> narrow(list.begin(), list.end());
+    out.putAll(std::span<const Index>(narrow));
   };
   const auto row = [](const Vertex& v) { return v.row; };
   const auto column = [](const Vertex& v) { return v.column; };
@@ -200,9 +208,8 @@ std::string writeTile(const TileData& tile, const QuantizedMeshOptions& options)
   const std::size_t vertices = tile.vertices.size();
   const bool wide = vertices > kIndices32Above;
   const std::size_t indexBytes = wide ? 4 : 2;
-  ByteWriter out(88 + 4 + 6 * vertices + 4 + indexBytes * (tile.triangles.size() + 4 * 64) +
-                 32 + tile.normals.size() + 5 + options.waterMask.size() + 9 +
-                 options.metadata.size());
+  ByteWriter out(88 + 4 + 6 * vertices + 4 + indexBytes * (tile.triangles.size() + 4 * 64) + 32 +
+                 tile.normals.size() + 5 + options.waterMask.size() + 9 + options.metadata.size());
   const auto [minHeight, maxHeight] = heightBounds(tile.vertices);
   writeHeader(out, tile, minHeight, maxHeight);
   writeVertices(out, tile, minHeight, maxHeight);

@@ -95,6 +95,12 @@ SampleGrid TileScheme::rasterGrid(const TileId& tile, int size) const {
   return webGrid(tile, size, size, 0.5, true);
 }
 
+SampleGrid TileScheme::borderedRasterGrid(const TileId& tile, int size) const {
+  // Global index tile·size + k − 0.5 is exact in double, as tile·size + k + 0.5 is.
+  return kind_ == SchemeKind::kLocal ? localGrid(tile, size, size + 2, -0.5, true)
+                                     : webGrid(tile, size, size + 2, -0.5, true);
+}
+
 SampleGrid TileScheme::meshGrid(const TileId& tile, int quads) const {
   switch (kind_) {
   case SchemeKind::kLocal:

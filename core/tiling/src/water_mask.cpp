@@ -37,40 +37,95 @@ WaterMask::WaterMask(const construction::World& world, const geometry::LocalProj
 
 std::vector<std::uint8_t> WaterMask::of(const Aabb& lonLat) const {
   constexpr auto kCells = static_cast<std::size_t>(kSize) * kSize;
-  const Vec2 cell = lonLat.size() * (1.0 / kSize);
+  const double cell = cellMetres(lonLat);
+  // A first look from the box's outline in the local frame (16 points a side, grown 1 %): no
+  // shore in it and no river a cell wide decides most boxes without a cell.
+  Aabb outline;
+  for (int k = 0; k <= 16; ++k) {
+    const double t = k / 16.0;
+    const Vec2 size = lonLat.size();
+    for (Vec2 p : {Vec2{lonLat.min.x + t * size.x, lonLat.min.y},
+                   Vec2{lonLat.min.x + t * size.x, lonLat.max.y},
+                   Vec2{lonLat.min.x, lonLat.min.y + t * size.y},
+                   Vec2{lonLat.max.x, lonLat.min.y + t * size.y}})
+      outline.add(projection_.forward(p));
+  }
+  outline = outline.expanded(0.01 * std::max(outline.size().x, outline.size().y));
+  const geometry::PolygonIndex& land = world_.land();
+  const double reach = 0.5 * geometry::length(outline.size()) * (1.0 + 1e-9) + 1e-6;
+  if (land.distanceToBoundary(outline.center(), reach) >= reach) {
+    if (!land.contains(outline.center()))
+      return {kWater}; // all sea or all lake
+    if (!anyRiver(outline, cell))
+      return {0};
+  }
+
   std::vector<double> lons(kSize), lats(kSize);
   for (int k = 0; k < kSize; ++k) {
-    lons[static_cast<std::size_t>(k)] = lonLat.min.x + (k + 0.5) * cell.x;
-    lats[static_cast<std::size_t>(k)] = lonLat.max.y - (k + 0.5) * cell.y;
+    lons[static_cast<std::size_t>(k)] = lonLat.min.x + (k + 0.5) * lonLat.size().x / kSize;
+    lats[static_cast<std::size_t>(k)] = lonLat.max.y - (k + 0.5) * lonLat.size().y / kSize;
   }
   std::vector<Vec2> cells;
   projection_.forwardGrid(lons, lats, cells);
-  const Aabb box = boundsOf(cells);
-
-  const geometry::PolygonIndex& land = world_.land();
-  const geometry::PolygonIndex::Clearance clear =
-      box.intersects(land.bounds()) ? land.clearance(box)
-                                    : geometry::PolygonIndex::Clearance{1.0, false};
-  if (clear.distance > 0.0 && !clear.inside)
-    return {kWater}; // all sea or all lake
   std::vector<std::uint8_t> mask(kCells, 0);
-  if (clear.distance <= 0.0)
-    for (std::size_t i = 0; i < kCells; ++i)
-      mask[i] = land.contains(cells[i]) ? 0 : kWater;
-  addRivers(lonLat, cells, mask);
+  addSeaAndLakes(cells, mask);
+  addRivers(lonLat, cell, cells, mask);
   if (std::all_of(mask.begin(), mask.end(), [&](std::uint8_t v) { return v == mask[0]; }))
     return {mask[0]};
   return mask;
 }
 
-void WaterMask::addRivers(const Aabb& lonLat, const std::vector<Vec2>& cells,
-                          std::vector<std::uint8_t>& mask) const {
-  // A river shows when it is at least one cell wide: the cell's side, as the mean of its
-  // north-south and (at the box's middle latitude) east-west extents.
+double WaterMask::cellMetres(const Aabb& lonLat) noexcept {
   const Vec2 cellDegrees = lonLat.size() * (1.0 / kSize);
   const double middle = lonLat.center().y * kRadiansPerDegree;
-  const double cellMetres = 0.5 * geometry::kEarthRadius * kRadiansPerDegree *
-                            (cellDegrees.y + cellDegrees.x * std::cos(middle));
+  return 0.5 * geometry::kEarthRadius * kRadiansPerDegree *
+         (cellDegrees.y + cellDegrees.x * std::cos(middle));
+}
+
+bool WaterMask::anyRiver(const Aabb& local, double width) const {
+  const auto& rivers = world_.data().rivers;
+  for (std::size_t r = 0; r < rivers.size(); ++r)
+    if (std::max(rivers[r].widthUp, rivers[r].widthDown) >= width &&
+        world_.riverSupport(base::PrimitiveId(static_cast<std::uint32_t>(r))).intersects(local))
+      return true;
+  return false;
+}
+
+void WaterMask::addSeaAndLakes(const std::vector<Vec2>& cells,
+                               std::vector<std::uint8_t>& mask) const {
+  // Blocks of kBlock² cells with no shore near are filled whole; the others ask cell by cell.
+  constexpr int kBlock = 16;
+  const geometry::PolygonIndex& land = world_.land();
+  for (int bj = 0; bj < kSize; bj += kBlock)
+    for (int bi = 0; bi < kSize; bi += kBlock) {
+      const auto at = [&](int i, int j) {
+        return static_cast<std::size_t>(j) * kSize + static_cast<std::size_t>(i);
+      };
+      Aabb block;
+      for (int j = bj; j < bj + kBlock; ++j) {
+        block.add(cells[at(bi, j)]);
+        block.add(cells[at(bi + kBlock - 1, j)]);
+      }
+      for (int i = bi; i < bi + kBlock; ++i) {
+        block.add(cells[at(i, bj)]);
+        block.add(cells[at(i, bj + kBlock - 1)]);
+      }
+      // No shore within the block's half diagonal of its centre: one side of it throughout.
+      const Vec2 centre = block.center();
+      const double reach = 0.5 * geometry::length(block.size()) * (1.0 + 1e-9) + 1e-6;
+      const bool clear = land.distanceToBoundary(centre, reach) >= reach;
+      const bool blockInside = clear && land.contains(centre);
+      for (int j = bj; j < bj + kBlock; ++j)
+        for (int i = bi; i < bi + kBlock; ++i) {
+          const bool inside = clear ? blockInside : land.contains(cells[at(i, j)]);
+          mask[at(i, j)] = inside ? 0 : kWater;
+        }
+    }
+}
+
+void WaterMask::addRivers(const Aabb& lonLat, double cellMetres, const std::vector<Vec2>& cells,
+                          std::vector<std::uint8_t>& mask) const {
+  const Vec2 cellDegrees = lonLat.size() * (1.0 / kSize);
   const Aabb box = boundsOf(cells);
   const auto& rivers = world_.data().rivers;
   for (std::size_t r = 0; r < rivers.size(); ++r) {

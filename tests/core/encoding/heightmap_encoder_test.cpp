@@ -2,6 +2,7 @@
 #include "result_matchers.h"
 
 #include "strahler/encoding/heightmap_encoder.h"
+#include "strahler/encoding/rgb_png.h"
 #include "strahler/image/image.h"
 
 #include <gtest/gtest.h>
@@ -479,6 +480,33 @@ TEST(HeightmapGolden, FloatFilesHoldTheGridBitForBit) {
                               image::decodeFloatImage(readFile(goldenPath(golden)), container));
     EXPECT_EQ(decoded.pixels, grid.heights) << goldenPath(golden);
   }
+}
+
+TEST(RgbPng, DecodesToItsPixelsAsAnEightBitRgbPngWithNoAncillaryChunks) {
+  std::vector<std::uint8_t> pixels;
+  for (int i = 0; i < 37 * 11 * 3; ++i)
+    pixels.push_back(static_cast<std::uint8_t>((i * 37) ^ (i >> 3)));
+  const auto bytes = encodeRgbPng(pixels, 37, 11);
+  ASSERT_TRUE(bytes.ok()) << bytes.error().message;
+  const DecodedPng png = decodePng(bytes.value());
+  EXPECT_EQ(png.header.width, 37u);
+  EXPECT_EQ(png.header.height, 11u);
+  EXPECT_EQ(png.header.bit_depth, 8);
+  EXPECT_EQ(png.header.color_type, SPNG_COLOR_TYPE_TRUECOLOR);
+  EXPECT_EQ(png.samples, pixels);
+  for (const std::string& type : chunkTypes(bytes.value()))
+    EXPECT_TRUE(type == "IHDR" || type == "IDAT" || type == "IEND") << type;
+  EXPECT_EQ(encodeRgbPng(pixels, 37, 11).value(), bytes.value()); // deterministic
+}
+
+TEST(RgbPng, RejectsBadDimensionsAndByteCounts) {
+  EXPECT_EQ(encodeRgbPng({}, 0, 1).error().code, ErrorCode::kInvalidInput);
+  EXPECT_EQ(encodeRgbPng(std::vector<std::uint8_t>(3 * 4097), 4097, 1).error().code,
+            ErrorCode::kInvalidInput);
+  const auto wrong = encodeRgbPng(std::vector<std::uint8_t>(11), 2, 2);
+  ASSERT_FALSE(wrong.ok());
+  EXPECT_EQ(wrong.error().code, ErrorCode::kInvalidInput);
+  EXPECT_NE(wrong.error().message.find("11 bytes"), std::string::npos);
 }
 
 } // namespace

@@ -104,13 +104,13 @@ inline int gridIndexOf(int quantized, int cells) {
 
 /// What a decoded tile says about its grid.
 struct MeshAnalysis {
-  std::vector<int> column, row;     ///< Grid sample of each vertex.
-  double exactError = 0.0;          ///< Worst sample vs the mesh of exact vertex heights, m.
-  double decodedError = 0.0;        ///< Worst sample vs the mesh of decoded heights, m.
-  double worstVertexHeight = 0.0;   ///< Worst decoded vertex height vs its sample, m.
-  double area = 0.0;                ///< Sum of signed triangle areas, cells².
-  std::size_t clockwise = 0;        ///< Triangles not counter-clockwise.
-  std::size_t uncovered = 0;        ///< Samples in no triangle.
+  std::vector<int> column, row;   ///< Grid sample of each vertex.
+  double exactError = 0.0;        ///< Worst sample vs the mesh of exact vertex heights, m.
+  double decodedError = 0.0;      ///< Worst sample vs the mesh of decoded heights, m.
+  double worstVertexHeight = 0.0; ///< Worst decoded vertex height vs its sample, m.
+  double area = 0.0;              ///< Sum of signed triangle areas, cells².
+  std::size_t clockwise = 0;      ///< Triangles not counter-clockwise.
+  std::size_t uncovered = 0;      ///< Samples in no triangle.
 };
 
 inline MeshAnalysis analyse(const DecodedTile& tile, const QuantizedMeshGrid& grid) {
@@ -152,8 +152,8 @@ inline MeshAnalysis analyse(const DecodedTile& tile, const QuantizedMeshGrid& gr
           continue;
         covered[static_cast<std::size_t>(j * grid.samples + i)] = 1;
         const double h = sampleOf(grid, i, j);
-        a.exactError = std::max(
-            a.exactError, std::fabs(w0 * exact[0] + w1 * exact[1] + w2 * exact[2] - h));
+        a.exactError =
+            std::max(a.exactError, std::fabs(w0 * exact[0] + w1 * exact[1] + w2 * exact[2] - h));
         a.decodedError = std::max(
             a.decodedError, std::fabs(w0 * decoded[0] + w1 * decoded[1] + w2 * decoded[2] - h));
       }

@@ -23,13 +23,13 @@ struct DecodedTile {
   std::array<double, 3> sphereCenter{};
   double sphereRadius = 0.0;
   std::array<double, 3> horizonOcclusionPoint{};
-  std::vector<int> u, v, height; ///< 0..32767, zig-zag deltas undone.
-  int indexBytes = 0;            ///< 2 or 4.
+  std::vector<int> u, v, height;       ///< 0..32767, zig-zag deltas undone.
+  int indexBytes = 0;                  ///< 2 or 4.
   std::size_t triangleCountOffset = 0; ///< Byte offset of triangleCount (after any padding).
   std::vector<std::uint32_t> indices;  ///< High-water marks undone.
   std::vector<std::uint32_t> west, south, east, north;
-  std::vector<int> extensionOrder;                          ///< Extension ids as they came.
-  std::map<int, std::vector<std::uint8_t>> extensions;      ///< Id → payload.
+  std::vector<int> extensionOrder;                     ///< Extension ids as they came.
+  std::map<int, std::vector<std::uint8_t>> extensions; ///< Id → payload.
 
   std::size_t vertexCount() const { return u.size(); }
   /// The decoded height of vertex k, m (as Cesium decodes it, in float32 bounds).

@@ -12,6 +12,10 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <random>
 #include <string>
@@ -21,11 +25,12 @@ namespace strahler::encoding {
 namespace {
 
 using test_support::analyse;
-using test_support::decodeQuantizedMesh;
 using test_support::DecodedTile;
+using test_support::decodeQuantizedMesh;
 using test_support::Field;
 using test_support::gridFrom;
 using test_support::Vec3;
+namespace fs = std::filesystem;
 
 constexpr int kSamples = 65;
 
@@ -124,8 +129,17 @@ TEST(QuantizedMesh, RoughTerrainKeepsManySamplesWithinTheError) {
 
 TEST(QuantizedMesh, ConeStaysWithinTheError) {
   const QuantizedMeshGrid grid = gridFrom(coneField(), 0, 0, 1, kSamples);
-  for (double maxError : {0.5, 5.0, 50.0})
+  for (double maxError : {0.5, 5.0, 50.0, std::numeric_limits<double>::infinity()})
     expectValidMesh(encode(grid, withError(maxError)), grid, maxError);
+}
+
+TEST(QuantizedMesh, SmallestAndLargestGridsMesh) {
+  for (int samples : {3, 1025}) {
+    const QuantizedMeshGrid grid = gridFrom(coneField(), -samples / 2, -samples / 2, 1, samples);
+    const Encoded e = encode(grid, withError(2.0));
+    expectValidMesh(e, grid, 2.0);
+    EXPECT_EQ(e.tile.south.size(), static_cast<std::size_t>(samples));
+  }
 }
 
 TEST(QuantizedMesh, ZeroErrorKeepsEverySample) {
@@ -152,10 +166,14 @@ TEST(QuantizedMesh, EdgeListsHoldExactlyTheGridsEdgeSamples) {
     EXPECT_EQ(sorted, expected) << name;
     EXPECT_EQ(list.size(), static_cast<std::size_t>(kSamples)) << name;
   };
-  expectEdge(e.tile.west, [](int c, int) { return c == 0; }, "west");
-  expectEdge(e.tile.south, [](int, int r) { return r == 0; }, "south");
-  expectEdge(e.tile.east, [last](int c, int) { return c == last; }, "east");
-  expectEdge(e.tile.north, [last](int, int r) { return r == last; }, "north");
+  expectEdge(
+      e.tile.west, [](int c, int) { return c == 0; }, "west");
+  expectEdge(
+      e.tile.south, [](int, int r) { return r == 0; }, "south");
+  expectEdge(
+      e.tile.east, [last](int c, int) { return c == last; }, "east");
+  expectEdge(
+      e.tile.north, [last](int, int r) { return r == last; }, "north");
   for (std::uint32_t k : e.tile.west)
     EXPECT_EQ(e.tile.u[k], 0);
   for (std::uint32_t k : e.tile.north)
@@ -175,6 +193,14 @@ TEST(QuantizedMesh, ManyVerticesUseAlignedThirtyTwoBitIndices) {
   EXPECT_EQ(a.clockwise, 0u);
   EXPECT_EQ(a.exactError, 0.0);
   EXPECT_EQ(e.tile.west.size(), 257u);
+}
+
+TEST(QuantizedMesh, UpToSixtyFourKiVerticesKeepSixteenBitIndices) {
+  const QuantizedMeshGrid grid = gridFrom(roughField(), 0, 0, 1, 257);
+  const Encoded e = encode(grid, withError(2.0));
+  EXPECT_GT(e.tile.vertexCount(), 60000u);
+  EXPECT_LE(e.tile.vertexCount(), 65536u);
+  expectValidMesh(e, grid, 2.0);
 }
 
 TEST(QuantizedMesh, SameInputGivesSameBytes) {
@@ -219,9 +245,9 @@ void expectHeaderMatchesGeodesy(const QuantizedMeshGrid& grid, double maxError) 
   EXPECT_LT(t.maximumHeight, high + 1e-3);
 
   const GeographicRect& r = grid.rect;
-  const Vec3 centre = test_support::geodeticToEcef(
-      0.5 * (r.west + r.east), 0.5 * (r.south + r.north),
-      0.5 * (static_cast<double>(t.minimumHeight) + t.maximumHeight));
+  const Vec3 centre =
+      test_support::geodeticToEcef(0.5 * (r.west + r.east), 0.5 * (r.south + r.north),
+                                   0.5 * (static_cast<double>(t.minimumHeight) + t.maximumHeight));
   for (int c = 0; c < 3; ++c)
     EXPECT_NEAR(t.center[c], centre[c], 1e-6);
 
@@ -295,8 +321,10 @@ Vec3 expectedNormal(const QuantizedMeshGrid& grid, int i, int j) {
   const double m = test_support::kA * (1.0 - test_support::kE2) / (w * std::sqrt(w));
   const double dx = 2.0 * (r.east - r.west) / cells * test_support::kRad * n * std::cos(phi);
   const double dy = 2.0 * (r.north - r.south) / cells * test_support::kRad * m;
-  const double gx = (test_support::sampleOf(grid, i + 1, j) - test_support::sampleOf(grid, i - 1, j)) / dx;
-  const double gy = (test_support::sampleOf(grid, i, j + 1) - test_support::sampleOf(grid, i, j - 1)) / dy;
+  const double gx =
+      (test_support::sampleOf(grid, i + 1, j) - test_support::sampleOf(grid, i - 1, j)) / dx;
+  const double gy =
+      (test_support::sampleOf(grid, i, j + 1) - test_support::sampleOf(grid, i, j - 1)) / dy;
   const Vec3 east{-std::sin(lambda), std::cos(lambda), 0.0};
   const Vec3 north{-std::sin(phi) * std::cos(lambda), -std::sin(phi) * std::sin(lambda),
                    std::cos(phi)};
@@ -369,7 +397,7 @@ TEST(QuantizedMesh, OctDecodingRoundTripsUnitVectorsBelowAndAbove) {
 // --- Neighbours ---------------------------------------------------------------------------
 
 struct EdgeVertex {
-  int along;    ///< Quantized position along the edge.
+  int along; ///< Quantized position along the edge.
   double height;
   std::uint8_t octX, octY;
 };
@@ -496,8 +524,8 @@ TEST(QuantizedMesh, EllipsoidTilesAreSeaLevelAndFollowTheCurvature) {
                                     rect.south + t.v[v] / 32767.0 * size);
         };
         const double angle = std::acos(std::clamp(test_support::dot(at(p), at(q)), -1.0, 1.0));
-        const bool oneCell = std::abs(t.u[p] - t.u[q]) <= 2048 + 1 &&
-                             std::abs(t.v[p] - t.v[q]) <= 2048 + 1;
+        const bool oneCell =
+            std::abs(t.u[p] - t.u[q]) <= 2048 + 1 && std::abs(t.v[p] - t.v[q]) <= 2048 + 1;
         EXPECT_TRUE(angle <= limit * 1.01 || oneCell) << "level " << level;
       }
   }
@@ -508,8 +536,8 @@ TEST(QuantizedMesh, MalformedInputIsRejected) {
   const QuantizedMeshOptions options = withError(1.0);
   STRAHLER_ASSERT_OK(encodeQuantizedMesh(good, options));
   const auto rejects = [&](QuantizedMeshGrid grid, QuantizedMeshOptions o, const char* part) {
-    EXPECT_TRUE(strahler::test_support::failsWith(encodeQuantizedMesh(grid, o), base::ErrorCode::kInvalidInput,
-                                        part));
+    EXPECT_TRUE(strahler::test_support::failsWith(encodeQuantizedMesh(grid, o),
+                                                  base::ErrorCode::kInvalidInput, part));
   };
   for (int samples : {0, 2, 16, 18, 2049}) {
     QuantizedMeshGrid grid = good;
@@ -525,6 +553,9 @@ TEST(QuantizedMesh, MalformedInputIsRejected) {
   grid = good;
   grid.heights[3] = std::numeric_limits<double>::infinity();
   rejects(grid, options, "height 3 is not finite");
+  grid = good;
+  grid.heights[7] = -2.0e6;
+  rejects(grid, options, "height 7 is outside [-1e6, 1e6] m");
   grid = good;
   grid.rect.east = grid.rect.west;
   rejects(grid, options, "west must be < east");
@@ -546,7 +577,39 @@ TEST(QuantizedMesh, MalformedInputIsRejected) {
   mask.waterMask.resize(2);
   rejects(good, mask, "water mask must have 0, 1 or 65536 bytes, not 2");
   EXPECT_TRUE(strahler::test_support::failsWith(encodeEllipsoidTile({10, 10, 5, 20}, options),
-                                      base::ErrorCode::kInvalidInput, "west must be < east"));
+                                                base::ErrorCode::kInvalidInput,
+                                                "west must be < east"));
+}
+
+// --- Golden tile ----------------------------------------------------------------------------
+// tests/data/golden/quantized_mesh_17.terrain; STRAHLER_UPDATE_GOLDEN=1 rewrites it.
+
+TEST(QuantizedMeshGolden, MatchesTheCommittedTileByteForByte) {
+  // Heights from integer arithmetic only, so the input is the same everywhere.
+  Field field = flatField();
+  field.height = [](int i, int j) {
+    return static_cast<double>(((i + 40) * 7919 + (j + 40) * 104729) % 2003) * 0.25 - 100.0;
+  };
+  QuantizedMeshOptions options = withError(40.0);
+  options.normals = true;
+  options.waterMask = {0};
+  options.metadata = R"({"available":[[{"startX":0,"startY":0,"endX":1,"endY":0}]]})";
+  const std::string bytes =
+      strahler::test_support::valueOf(encodeQuantizedMesh(gridFrom(field, 0, 0, 1, 17), options));
+  const fs::path path = fs::path(STRAHLER_TEST_DATA_DIR) / "golden" / "quantized_mesh_17.terrain";
+  const char* update = std::getenv("STRAHLER_UPDATE_GOLDEN");
+  if (update != nullptr && std::string(update) == "1") {
+    fs::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << bytes;
+    return;
+  }
+  ASSERT_TRUE(fs::exists(path)) << path << " is missing: run with STRAHLER_UPDATE_GOLDEN=1";
+  std::ifstream in(path, std::ios::binary);
+  const std::string committed{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_TRUE(committed == bytes)
+      << path << " differs from today's encoding; if the change is intended, rerun with "
+      << "STRAHLER_UPDATE_GOLDEN=1 and review the new file";
+  EXPECT_NO_THROW(decodeQuantizedMesh(committed));
 }
 
 } // namespace

@@ -65,6 +65,38 @@ TEST(TileScheme, MeshNeighboursShareTheirEdgeSamplesBitForBit) {
   }
 }
 
+TEST(TileScheme, BorderedRasterGridsHoldTheTileAndItsNeighboursEdgePixels) {
+  for (const TileScheme& s : {TileScheme::local({123.4, -56.7}, 48000.0),
+                              TileScheme::webMercator(geometry::LocalProjection(-27.35, 43.72))}) {
+    const int z = 12, n = 16, w = n + 2;
+    const std::int64_t x = s.kind() == SchemeKind::kLocal ? 1000 : 1736,
+                       y = s.kind() == SchemeKind::kLocal ? 2000 : 1487;
+    const SampleGrid b = s.borderedRasterGrid({z, x, y}, n), tile = s.rasterGrid({z, x, y}, n),
+                     east = s.rasterGrid({z, x + 1, y}, n), west = s.rasterGrid({z, x - 1, y}, n),
+                     north = s.rasterGrid({z, x, y - 1}, n), south = s.rasterGrid({z, x, y + 1}, n);
+    ASSERT_EQ(b.width, w);
+    ASSERT_EQ(b.height, w);
+    ASSERT_EQ(b.points.size(), static_cast<std::size_t>(w * w));
+    ASSERT_EQ(b.rowSpacing.size(), static_cast<std::size_t>(w));
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i)
+        ASSERT_TRUE(sameBits(b.points[(j + 1) * w + i + 1], tile.points[j * n + i]))
+            << i << "," << j;
+      ASSERT_EQ(b.rowSpacing[j + 1], tile.rowSpacing[j]);
+      // The west and east border columns are the neighbours' edge columns.
+      ASSERT_TRUE(sameBits(b.points[(j + 1) * w], west.points[j * n + n - 1]));
+      ASSERT_TRUE(sameBits(b.points[(j + 1) * w + n + 1], east.points[j * n]));
+    }
+    for (int i = 0; i < n; ++i) {
+      // The north and south border rows are the neighbours' edge rows.
+      ASSERT_TRUE(sameBits(b.points[i + 1], north.points[(n - 1) * n + i]));
+      ASSERT_TRUE(sameBits(b.points[(n + 1) * w + i + 1], south.points[i]));
+    }
+    EXPECT_EQ(b.rowSpacing[0], north.rowSpacing[n - 1]);
+    EXPECT_EQ(b.rowSpacing[n + 1], south.rowSpacing[0]);
+  }
+}
+
 TEST(TileScheme, WebSamplesMatchTheProjectionOfTheirLonLat) {
   const geometry::LocalProjection projection(2.95, 39.6);
   const TileScheme s = TileScheme::webMercator(projection);

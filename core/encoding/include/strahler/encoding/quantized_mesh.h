@@ -30,7 +30,8 @@ struct QuantizedMeshGrid {
 
 /// What a quantized-mesh tile carries beyond its mesh.
 struct QuantizedMeshOptions {
-  /// Largest vertical distance (m) between the mesh and any grid sample; 0 keeps every sample.
+  /// Largest vertical distance (m) between the mesh and any grid sample, before the heights'
+  /// 16-bit quantisation (which adds up to (max − min) / 65,534); 0 keeps every sample.
   /// The ellipsoid's curvature counts too: a triangle whose longest side spans more than
   /// √(8 · maxError / 6,378,137 m) radians (its chord would sag more than maxError below the
   /// surface) is split, so large flat tiles of the top levels still follow the globe.

@@ -73,6 +73,9 @@ public:
   geometry::Aabb geographicBounds(const TileId& tile) const noexcept;
   /// Pixel-centre samples of a `size`×`size` raster tile.
   SampleGrid rasterGrid(const TileId& tile, int size) const;
+  /// rasterGrid() with a one-pixel border, (size+2)²: sample (i+1, j+1) is rasterGrid's (i, j)
+  /// bit for bit, and the border holds the neighbouring tiles' edge pixels (for slopes).
+  SampleGrid borderedRasterGrid(const TileId& tile, int size) const;
   /// Bordered vertex samples of a mesh tile with `quads`×`quads` quads.
   SampleGrid meshGrid(const TileId& tile, int quads) const;
   /// The mesh frame of a tile: south-west corner and vertex spacing, in the scheme's own

@@ -27,9 +27,18 @@ public:
   std::vector<std::uint8_t> of(const geometry::Aabb& lonLat) const;
 
 private:
-  /// Marks the cells of `mask` that lie within half a channel width of a river of the box.
-  void addRivers(const geometry::Aabb& lonLat, const std::vector<geometry::Vec2>& cells,
-                 std::vector<std::uint8_t>& mask) const;
+  /// Sets the cells of `mask` off the land (sea and lakes) to kWater.
+  void addSeaAndLakes(const std::vector<geometry::Vec2>& cells,
+                      std::vector<std::uint8_t>& mask) const;
+  /// A cell's side (m): the mean of its north-south and, at the box's middle latitude,
+  /// east-west extents. A river shows when it is at least that wide.
+  static double cellMetres(const geometry::Aabb& lonLat) noexcept;
+  /// True when a river at least `width` wide reaches the local box.
+  bool anyRiver(const geometry::Aabb& local, double width) const;
+  /// Marks the cells of `mask` within half a channel width of a river of the box at least
+  /// `cellMetres` wide.
+  void addRivers(const geometry::Aabb& lonLat, double cellMetres,
+                 const std::vector<geometry::Vec2>& cells, std::vector<std::uint8_t>& mask) const;
 
   const construction::World& world_;
   geometry::LocalProjection projection_;
