@@ -11,7 +11,7 @@ import { changedShare, pixelStats } from './lib/pixels.mjs';
 import { startServer } from './lib/server.mjs';
 
 const SCREENSHOTS = join(dirname(fileURLToPath(import.meta.url)), 'screenshots');
-const TOTAL_MS = 240_000; // the whole file, server start to browser close
+const TOTAL_MS = 330_000; // the whole file, server start to browser close (~3 min here)
 const STEP_MS = 90_000;   // any one wait in a page (SwiftShader draws a globe slowly)
 
 let server, browser;
