@@ -1,6 +1,7 @@
 // Builds web/dist without a bundler: our pages and ES modules are copied as they are, and
-// the vendor modules they import are copied next to them. The import maps in index.html and
-// game.html resolve the bare names ("maplibre-gl", "pmtiles", "three", "three/addons/") to these copies,
+// the vendor modules they import are copied next to them. The import maps in index.html,
+// game.html and cesium.html resolve the bare names ("maplibre-gl", "pmtiles", "three",
+// "three/addons/", "cesium") to these copies,
 // so the pages work offline from any static file server, including `strahler serve`.
 import { cpSync, existsSync, mkdirSync, readFileSync, rmSync, copyFileSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
@@ -33,7 +34,7 @@ function copyModule(from, to, seen = new Set()) {
 rmSync(dist, { recursive: true, force: true });
 mkdirSync(dist, { recursive: true });
 
-for (const page of ['index.html', 'game.html']) copy(join(here, page), join(dist, page));
+for (const page of ['index.html', 'game.html', 'cesium.html']) copy(join(here, page), join(dist, page));
 cpSync(join(here, 'src'), join(dist, 'src'), { recursive: true });
 
 // MapLibre GL JS 6 ships ES modules; the main module starts its worker from the sibling
@@ -58,6 +59,19 @@ for (const loader of ['GLTFLoader.js', 'DRACOLoader.js']) {
 }
 for (const file of ['draco_decoder.js', 'draco_decoder.wasm', 'draco_wasm_wrapper.js']) {
   copy(join(three, 'examples', 'jsm', 'libs', 'draco', 'gltf', file), join(threeOut, 'draco', file));
+}
+
+// CesiumJS: its prebuilt ES module and the files it loads at run time from CESIUM_BASE_URL
+// (cesium.html sets it to vendor/cesium/): web workers, the draco/basis decoders, textures
+// (sky box, water normals, moon), the widgets' CSS and icons. Natural Earth II, the offline
+// imagery we never show (the page drapes strahler's own relief tiles), is left out (~1 MB).
+const cesium = join(modules, 'cesium', 'Build', 'Cesium');
+const cesiumOut = join(dist, 'vendor', 'cesium');
+copy(join(cesium, 'index.js'), join(cesiumOut, 'index.js'));
+for (const folder of ['Workers', 'ThirdParty', 'Assets', 'Widgets']) {
+  cpSync(join(cesium, folder), join(cesiumOut, folder), {
+    recursive: true, filter: (from) => !from.includes(`${join('Assets', 'Textures', 'NaturalEarthII')}`),
+  });
 }
 
 console.log(`build: wrote ${dist}`);

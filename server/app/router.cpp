@@ -7,6 +7,8 @@ Route routeOf(const std::vector<std::string>& s) {
     return {Endpoint::kIndex, {}};
   if (s.size() == 1 && s[0] == "game")
     return {Endpoint::kGame, {}};
+  if (s.size() == 1 && s[0] == "cesium")
+    return {Endpoint::kCesium, {}};
   if (s.size() == 1 && s[0] == "health")
     return {Endpoint::kHealth, {}};
   if (s.size() == 1 && s[0] == "metrics")

@@ -9,6 +9,7 @@ namespace strahler::app {
 enum class Endpoint {
   kIndex,          ///< /: the viewer, or a list of the worlds.
   kGame,           ///< /game: the viewer's game.html.
+  kCesium,         ///< /cesium: the viewer's cesium.html (CesiumJS on the Cesium terrain).
   kHealth,         ///< /health.
   kMetrics,        ///< /metrics (Prometheus).
   kWorldList,      ///< /worlds.

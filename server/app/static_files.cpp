@@ -15,6 +15,7 @@ const char* staticMime(const std::string& ext) {
                                                             {".css", "text/css"},
                                                             {".json", "application/json"},
                                                             {".png", "image/png"},
+                                                            {".jpg", "image/jpeg"},
                                                             {".svg", "image/svg+xml"},
                                                             {".wasm", "application/wasm"},
                                                             {".map", "application/json"},

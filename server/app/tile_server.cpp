@@ -128,6 +128,8 @@ void TileServer::handle(const http::Request& request, std::function<void(http::R
     return done(indexPage(options_.webRoot, worldIds()));
   case Endpoint::kGame:
     return done(staticFile(options_.webRoot, {"game.html"}));
+  case Endpoint::kCesium:
+    return done(staticFile(options_.webRoot, {"cesium.html"}));
   case Endpoint::kHealth:
     return done(jsonResponse(healthJson(worlds_.size()), "health"));
   case Endpoint::kMetrics:

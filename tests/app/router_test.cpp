@@ -19,6 +19,7 @@ TEST(Router, EachPathShapeNamesItsEndpoint) {
   } cases[] = {
       {S{}, Endpoint::kIndex, ""},
       {S{"game"}, Endpoint::kGame, ""},
+      {S{"cesium"}, Endpoint::kCesium, ""},
       {S{"health"}, Endpoint::kHealth, ""},
       {S{"metrics"}, Endpoint::kMetrics, ""},
       {S{"worlds"}, Endpoint::kWorldList, ""},

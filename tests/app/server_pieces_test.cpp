@@ -52,6 +52,7 @@ struct WebRoot {
     std::filesystem::create_directories(dir / "assets");
     std::ofstream(dir / "index.html") << "<html>viewer</html>";
     std::ofstream(dir / "assets" / "app.js") << "let x = 1;";
+    std::ofstream(dir / "assets" / "water.jpg") << "jpeg"; // CesiumJS's textures
     std::ofstream(dir / "notes.txt") << "private";
   }
   ~WebRoot() { std::filesystem::remove_all(dir); }
@@ -65,6 +66,10 @@ TEST(StaticFiles, ServesTheViewersFilesWithTheirTypesOnly) {
   EXPECT_EQ(js.route, "static");
   ASSERT_FALSE(js.headers.empty());
   EXPECT_EQ(js.headers[0].second, "text/javascript");
+  const http::Response jpeg = staticFile(root.dir.string(), {"assets", "water.jpg"});
+  EXPECT_EQ(jpeg.status, 200);
+  ASSERT_FALSE(jpeg.headers.empty());
+  EXPECT_EQ(jpeg.headers[0].second, "image/jpeg");
   EXPECT_EQ(staticFile(root.dir.string(), {"notes.txt"}).status, 404); // not a viewer type
   EXPECT_EQ(staticFile(root.dir.string(), {"missing.js"}).status, 404);
   EXPECT_EQ(staticFile(root.dir.string(), {"assets"}).status, 404); // a folder

@@ -65,3 +65,22 @@ export function showTimings(element, timings) {
   render();
   return setInterval(render, 300);
 }
+
+/**
+ * Adds to `timings` every resource the page fetched (by any loader, e.g. CesiumJS's own
+ * XMLHttpRequests) whose URL matches `pattern`, with its Server-Timing, through the Resource
+ * Timing API (same-origin, so serverTiming is readable). Returns the PerformanceObserver.
+ */
+export function observeResourceTimings(pattern, timings) {
+  const observer = new PerformanceObserver((list) => {
+    for (const entry of list.getEntries()) {
+      if (!pattern.test(entry.name)) continue;
+      const server = Object.fromEntries((entry.serverTiming ?? []).map((t) => [t.name, t.duration]));
+      timings.add({ fetch: entry.duration, ...server });
+    }
+  });
+  observer.observe({ type: 'resource', buffered: true });
+  // The observer sees every entry; the buffer is only for late observers, so keep it from filling.
+  performance.addEventListener('resourcetimingbufferfull', () => performance.clearResourceTimings());
+  return observer;
+}

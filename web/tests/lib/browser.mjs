@@ -14,10 +14,11 @@ export async function launchBrowser() {
 
 /**
  * Opens `url` in a fresh page and records what the tests assert on: console errors, uncaught
- * exceptions, failed requests and every response (url, status, content type).
+ * exceptions, failed requests and every response (url, status, content type). `viewport`
+ * defaults to 1280 × 800.
  */
-export async function openPage(browser, url) {
-  const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+export async function openPage(browser, url, viewport = { width: 1280, height: 800 }) {
+  const page = await browser.newPage({ viewport });
   const record = { errors: [], responses: [] };
   page.on('console', (message) => {
     if (message.type() === 'error') record.errors.push(`console: ${message.text()} (${message.location().url})`);
