@@ -98,7 +98,8 @@ TEST(CesiumTerrainServer, ATileCarriesTheExtensionsCesiumJsAsksForAndTheWorldsHe
   // ~0.1 m that rounding u/v to 1/32767 of the tile moves it), the sea at 0.
   const geometry::LocalProjection projection(island().data().projectionCenter.x,
                                              island().data().projectionCenter.y);
-  const double spacing = t.side() / 64.0 * M_PI / 180.0 * geometry::kEarthRadius;
+  // The grid's evaluation spacing: a quarter of its north-south step.
+  const double spacing = 0.25 * t.side() / 64.0 * M_PI / 180.0 * geometry::kEarthRadius;
   const double quantum = (tile.maximumHeight - tile.minimumHeight) / 32767.0;
   double worst = 0.0;
   for (std::size_t k = 0; k < tile.vertexCount(); ++k) {

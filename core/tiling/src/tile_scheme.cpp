@@ -192,9 +192,11 @@ SampleGrid TileScheme::geographicGrid(const TileId& tile, int n, int count, doub
   SampleGrid g;
   g.width = g.height = count;
   projection_.forwardGrid(lons, lats, g.points);
-  // The north-south distance between samples (the east-west one is shorter by cos φ): the
-  // coarser of the two, so that no octave finer than the grid survives to alias.
-  g.rowSpacing.assign(static_cast<std::size_t>(count), step / kDeg * geometry::kEarthRadius);
+  // A quarter of the north-south distance between samples: the vertices of a level carry the
+  // detail of two levels below, so that they lie within the level's geometric error of the
+  // finest terrain (at the grid's own spacing the faded octaves moved them by up to 1.6 times
+  // that error at level 11; docs/architecture.md, Cesium terrain).
+  g.rowSpacing.assign(static_cast<std::size_t>(count), 0.25 * step / kDeg * geometry::kEarthRadius);
   g.bounds = boundsOf(g.points);
   return g;
 }

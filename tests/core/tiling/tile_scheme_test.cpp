@@ -164,7 +164,8 @@ TEST(TileScheme, GeographicMeshGridsShareTheirEdgeSamplesWithTheirNeighbours) {
                          gn.points[static_cast<std::size_t>(n + j)]));
   }
   EXPECT_EQ(ga.rowSpacing, ge.rowSpacing);
-  EXPECT_NEAR(ga.rowSpacing[0], 180.0 / 4096 / quads * 3.14159265358979 / 180 * 6371008.8, 1e-6);
+  EXPECT_NEAR(ga.rowSpacing[0], 0.25 * 180.0 / 4096 / quads * 3.14159265358979 / 180 * 6371008.8,
+              1e-6);
 }
 
 } // namespace
