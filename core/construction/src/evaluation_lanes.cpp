@@ -1,4 +1,5 @@
 #include "evaluation_lanes.h"
+
 #include "folds.h"
 
 #include "strahler/simd/instruction_set.h"

@@ -89,8 +89,8 @@ Folds::Folds(const WorldData& data, const geometry::PolygonIndex& land,
   std::vector<Vec2> sum(m, Vec2{0.0, 0.0});
   for (int j = 0; j < ny_; ++j)
     for (int i = 0; i < nx_; ++i) {
-      const std::size_t n = static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
-                            static_cast<std::size_t>(i);
+      const std::size_t n =
+          static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
       const Vec2 p = nodeAt(i, j);
       std::uint32_t best = 0;
       double best2 = geometry::lengthSquared(p - mountains[0].position);
@@ -123,8 +123,8 @@ Folds::Folds(const WorldData& data, const geometry::PolygonIndex& land,
   std::set<std::pair<std::uint32_t, std::uint32_t>> adjacent;
   for (int j = 0; j < ny_; ++j)
     for (int i = 0; i < nx_; ++i) {
-      const std::size_t n = static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
-                            static_cast<std::size_t>(i);
+      const std::size_t n =
+          static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
       if (!onLand[n])
         continue;
       for (const std::size_t o : {i + 1 < nx_ ? n + 1 : n, j + 1 < ny_ ? n + nx_ : n})
@@ -175,8 +175,8 @@ Folds::Folds(const WorldData& data, const geometry::PolygonIndex& land,
   }
   along_.resize(plates_.velocity.size());
   for (std::size_t p = 0; p < along_.size(); ++p) // a plate without motion folds along x
-    along_[p] = geometry::lengthSquared(plates_.velocity[p]) > 0.0 ? plates_.velocity[p]
-                                                                    : Vec2{1.0, 0.0};
+    along_[p] =
+        geometry::lengthSquared(plates_.velocity[p]) > 0.0 ? plates_.velocity[p] : Vec2{1.0, 0.0};
 
   // Plate boundaries: nodes beside a node of another plate (on land, or beside land). The
   // convergence across a pair is (v_A − v_B) · e / 2 in [−1, 1], e the unit step from A's node
@@ -188,8 +188,8 @@ Folds::Folds(const WorldData& data, const geometry::PolygonIndex& land,
   std::vector<std::uint8_t> boundary(nodes, 0);
   for (int j = 0; j < ny_; ++j)
     for (int i = 0; i < nx_; ++i) {
-      const std::size_t n = static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
-                            static_cast<std::size_t>(i);
+      const std::size_t n =
+          static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
       const std::pair<std::size_t, Vec2> steps[] = {{i + 1 < nx_ ? n + 1 : n, Vec2{1.0, 0.0}},
                                                     {j + 1 < ny_ ? n + nx_ : n, Vec2{0.0, 1.0}}};
       for (const auto& [o, e] : steps) {
@@ -213,8 +213,8 @@ Folds::Folds(const WorldData& data, const geometry::PolygonIndex& land,
   const int window = static_cast<int>(std::ceil(reach * inverseSpacing_));
   for (int j = 0; j < ny_; ++j)
     for (int i = 0; i < nx_; ++i) {
-      const std::size_t b = static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
-                            static_cast<std::size_t>(i);
+      const std::size_t b =
+          static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
       if (!boundary[b])
         continue;
       const Vec2 at = nodeAt(i, j);
@@ -253,10 +253,11 @@ double Folds::strength(Vec2 p) const noexcept {
   fy = fy > 0.0 ? fy : 0.0;
   fx = fx < nx_ - 1 ? fx : nx_ - 1;
   fy = fy < ny_ - 1 ? fy : ny_ - 1;
-  const int i = std::min(static_cast<int>(fx), nx_ - 2), j = std::min(static_cast<int>(fy), ny_ - 2);
+  const int i = std::min(static_cast<int>(fx), nx_ - 2),
+            j = std::min(static_cast<int>(fy), ny_ - 2);
   const double tx = fx - i, ty = fy - j;
-  const std::size_t n = static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
-                        static_cast<std::size_t>(i);
+  const std::size_t n =
+      static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
   const std::size_t up = static_cast<std::size_t>(nx_);
   return (1.0 - ty) * ((1.0 - tx) * strength_[n] + tx * strength_[n + 1]) +
          ty * ((1.0 - tx) * strength_[n + up] + tx * strength_[n + up + 1]);
@@ -268,9 +269,10 @@ Folds::Frame Folds::frame(Vec2 p) const noexcept {
   fy = fy > 0.0 ? fy : 0.0;
   fx = fx < nx_ - 1 ? fx : nx_ - 1;
   fy = fy < ny_ - 1 ? fy : ny_ - 1;
-  const int i = std::min(static_cast<int>(fx), nx_ - 2), j = std::min(static_cast<int>(fy), ny_ - 2);
-  const std::size_t n = static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
-                        static_cast<std::size_t>(i);
+  const int i = std::min(static_cast<int>(fx), nx_ - 2),
+            j = std::min(static_cast<int>(fy), ny_ - 2);
+  const std::size_t n =
+      static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
   const std::size_t corners[4] = {n, n + 1, n + static_cast<std::size_t>(nx_),
                                   n + static_cast<std::size_t>(nx_) + 1};
   // Nodes of positive strength around a point are all of one plate (any two nodes of a cell

@@ -47,10 +47,10 @@ private:
   geometry::Vec2 origin_;
   double spacing_ = 1.0;
   double inverseSpacing_ = 1.0;
-  int nx_ = 0, ny_ = 0;                // nodes per row, rows (≥ 2 each)
-  std::vector<std::uint32_t> plate_;   // per node
-  std::vector<double> strength_;       // per node, in [0, 1]
-  std::vector<geometry::Vec2> along_;  // per plate: the unit direction of its motion
+  int nx_ = 0, ny_ = 0;               // nodes per row, rows (≥ 2 each)
+  std::vector<std::uint32_t> plate_;  // per node
+  std::vector<double> strength_;      // per node, in [0, 1]
+  std::vector<geometry::Vec2> along_; // per plate: the unit direction of its motion
   double amplitude_ = 0.0;
   TectonicPlates plates_;
   noise::LatticeNoise noise_;

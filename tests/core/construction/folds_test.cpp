@@ -123,8 +123,7 @@ TEST(Folds, FoldTheReliefNearConvergentBoundariesOnly) {
   const World& folded = foldedWorld();
   const World& flat = flatWorld();
   std::size_t folds = 0, changed = 0, unfolded = 0;
-  double worst = 0.0, sum = 0.0, highSum = 0.0;
-  std::size_t high = 0;
+  double worst = 0.0, sum = 0.0;
   for (const Vec2 p : landPoints(folded, 500.0)) {
     const double a = folded.height(p, 30.0), b = flat.height(p, 30.0);
     const double strength = folded.foldStrength(p);
@@ -137,22 +136,17 @@ TEST(Folds, FoldTheReliefNearConvergentBoundariesOnly) {
       ++folds;
       changed += a != b;
       sum += std::abs(a - b);
-      if (b > 1000.0) {
-        ++high;
-        highSum += std::abs(a - b);
-      }
     }
     worst = std::max(worst, std::abs(a - b));
   }
-  std::printf("folded samples %zu (changed %zu), unfolded %zu; mean |fold| %.1f m, largest %.1f m\n",
-              folds, changed, unfolded, sum / static_cast<double>(folds), worst);
-  std::printf("above 1,000 m: %zu samples, mean |fold| %.1f m\n", high,
-              highSum / static_cast<double>(std::max<std::size_t>(high, 1)));
+  std::printf(
+      "folded samples %zu (changed %zu), unfolded %zu; mean |fold| %.1f m, largest %.1f m\n", folds,
+      changed, unfolded, sum / static_cast<double>(folds), worst);
   ASSERT_GT(folds, 1000u);
   EXPECT_GT(unfolded, 1000u);
   EXPECT_GT(changed, folds * 9 / 10);
   // Tens of metres on average, at most a few hundred (TectonicFolds: amplitude and slope cap).
-  EXPECT_GT(sum / static_cast<double>(folds), 5.0);
+  EXPECT_GT(sum / static_cast<double>(folds), 3.0);
   EXPECT_LT(worst, 600.0);
 }
 
@@ -240,8 +234,8 @@ TEST(Folds, DrainageHoldsWithFolds) {
       quality::rasterizeWorld(world, 60.0, 2, quality::RiverBurning::kNone), 1.0);
   const quality::DrainageReport flat = quality::checkDrainage(
       quality::rasterizeWorld(flatWorld(), 60.0, 2, quality::RiverBurning::kNone), 1.0);
-  std::printf("draining without burning: %.4f with folds, %.4f without\n",
-              folded.drainingFraction, flat.drainingFraction);
+  std::printf("draining without burning: %.4f with folds, %.4f without\n", folded.drainingFraction,
+              flat.drainingFraction);
   EXPECT_GE(folded.drainingFraction, 0.995);
   const quality::RiverProfileReport rivers = quality::checkRiversDescend(
       quality::riverCentrelines(world), [&](Vec2 p) { return world.height(p, 1.0); }, 5.0, 0.5);
@@ -265,7 +259,8 @@ TEST(Folds, TileCostWithAndWithoutFolds) {
       const auto start = std::chrono::steady_clock::now();
       for (const tiling::SampleGrid& g : grids)
         evaluator.evaluate(g);
-      const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
+      const std::chrono::duration<double, std::milli> took =
+          std::chrono::steady_clock::now() - start;
       best = std::min(best, took.count() / static_cast<double>(grids.size()));
     }
     return best;

@@ -35,16 +35,18 @@ struct TectonicPlates {
 
 /// The constants of the folds (see docs/architecture.md, "Vector map: tectonic folds").
 struct TectonicFolds {
-  static constexpr int kOctaves = 4;           ///< fBm octaves of the folds
-  static constexpr double kLongest = 4096.0;   ///< m: the first octave's wavelength along the motion
-  static constexpr double kElongation = 4.0;   ///< crests are this many times longer than wide
-  static constexpr double kGain = 0.5;         ///< amplitude ratio of successive octaves
-  static constexpr double kReliefShare = 0.1;  ///< first octave's amplitude / mountains' height
+  static constexpr int kOctaves = 4;          ///< fBm octaves of the folds
+  static constexpr double kLongest = 4096.0;  ///< m: the first octave's wavelength along the motion
+  static constexpr double kElongation = 4.0;  ///< crests are this many times longer than wide
+  static constexpr double kGain = 0.5;        ///< amplitude ratio of successive octaves
+  static constexpr double kReliefShare = 0.1; ///< first octave's amplitude / mountains' height
   static constexpr double kMinAmplitude = 50.0;  ///< m, bounds of the first octave's amplitude
   static constexpr double kMaxAmplitude = 300.0; ///< m
   /// Each octave's slope is at most this share of the terrain blend's slope where it is added
-  /// (with kNoiseSlope), so the folds never flatten the ground they fold: no new pits.
-  static constexpr double kSlopeShare = 0.5;
+  /// (with kNoiseSlope): folds stand out on steep ground, vanish on flats, and rarely level a
+  /// slope into a pit (Corsica, 30 m cells: 99.76 % drains without burning, 99.95 % without
+  /// folds; 0.5 left 99.40 % at 60 m, 1.0 99.13 %).
+  static constexpr double kSlopeShare = 0.3;
   /// A bound of the lattice noise's gradient, per lattice unit (noise::LatticeNoise).
   static constexpr double kNoiseSlope = 2.0;
   /// Largest number of grid nodes (the node spacing grows to respect it).
