@@ -1,5 +1,7 @@
 #include "evaluation_lanes.h"
 
+#include "folds.h"
+
 #include "strahler/simd/instruction_set.h"
 #include "strahler/simd/lane_ops.h"
 #include "strahler/simd/lanes.h"

@@ -10,6 +10,8 @@
 
 namespace strahler::construction::detail {
 
+class Folds;
+
 /// The noise octaves alive at one sample spacing: the first `active` octaves, each scaled by
 /// its LOD fade.
 struct OctaveFades {
@@ -51,6 +53,8 @@ struct TerrainLaneArgs {
   double* h = nullptr;
   double* w = nullptr;
   TerrainSums* sums = nullptr; ///< scratch for the sums
+  /// The tectonic folds added to the blend (Folds::at), or null: none (no drawn mountains).
+  const Folds* folds = nullptr;
 };
 
 /// The terrain blend compiled for the instruction set in use (same bits on each).

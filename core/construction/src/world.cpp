@@ -1,6 +1,7 @@
 #include "strahler/construction/world.h"
 
 #include "evaluation_lanes.h"
+#include "folds.h"
 #include "tributaries.h"
 
 #include "strahler/base/random.h"
@@ -145,7 +146,10 @@ World::World(WorldData data)
                        ? std::make_shared<detail::Tributaries>(
                              base::mixHash(data_.params.seed, kTributaryStream),
                              data_.params.tributaryLevels)
-                       : nullptr) {
+                       : nullptr),
+      folds_(data_.features.mountains.empty()
+                 ? nullptr
+                 : std::make_shared<detail::Folds>(data_, land_, worldBounds(data_))) {
   hot_.reserve(data_.terrain.size());
   for (const primitives::TerrainPrimitive& t : data_.terrain) {
     const double radius2 = t.radius * t.radius;
@@ -222,6 +226,14 @@ World::World(WorldData data)
   }
 }
 
+const TectonicPlates* World::plates() const noexcept {
+  return folds_ ? &folds_->plates() : nullptr;
+}
+
+double World::foldStrength(Vec2 p) const noexcept {
+  return folds_ ? folds_->strength(p) : 0.0;
+}
+
 double World::controlHeight(Vec2 p) const noexcept {
   double weight = 0.0, height = 0.0;
   for (const std::uint32_t i : terrainGrid_.cellAt(p)) {
@@ -277,7 +289,8 @@ void World::terrainLanes(std::size_t lanes, const Vec2* first, const Vec2* secon
                                      second ? 2u : 1u,
                                      h,
                                      w,
-                                     &sums};
+                                     &sums,
+                                     folds_.get()};
   if (lanes == 1)
     detail::terrainPoint(args);
   else

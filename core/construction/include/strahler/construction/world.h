@@ -2,6 +2,7 @@
 
 #include "strahler/base/strong_id.h"
 #include "strahler/construction/operators.h"
+#include "strahler/construction/tectonic_plates.h"
 #include "strahler/construction/world_data.h"
 #include "strahler/geometry/grid_index.h"
 #include "strahler/geometry/polygon_index.h"
@@ -17,6 +18,7 @@
 namespace strahler::construction {
 
 namespace detail {
+class Folds;
 class Tributaries;
 class WorldTributarySource;
 } // namespace detail
@@ -44,7 +46,9 @@ struct NoiseOctaves {
 /// primitive i (its elevation and slope), where the amplitude A
 /// and gain G are the w-weighted means of the primitives' amplitude and roughness, and octaves
 /// 2–6 are gullies running down the blend's gradient: one shared relief whose character
-/// follows the primitives (see docs/architecture.md).
+/// follows the primitives (see docs/architecture.md). With drawn mountains
+/// (data().features.mountains) B(T…) also holds the tectonic folds (TectonicPlates), added
+/// before the rivers' union.
 class World {
 public:
   /// Indexes `data` (which must be consistent, as the generator and the store make it).
@@ -79,6 +83,11 @@ public:
   RiverCandidate wholeRiver(base::PrimitiveId i) const noexcept {
     return {i.value, 0, hotRivers_[i.index()].chunkCount};
   }
+  /// The plates of the drawn mountains (data().features.mountains), null without any.
+  const TectonicPlates* plates() const noexcept;
+  /// The tectonic folds' strength at p in [0, 1]: 0 without drawn mountains, on plate
+  /// boundaries and beyond the folds' reach from convergent ones.
+  double foldStrength(geometry::Vec2 p) const noexcept;
   /// The land with fast point and distance queries.
   const geometry::PolygonIndex& land() const noexcept { return land_; }
 
@@ -245,6 +254,7 @@ private:
   noise::LatticeNoise noise_;
   std::uint32_t gullySeed_ = 0;                            // shuffles the gully octaves' phases
   std::shared_ptr<const detail::Tributaries> tributaries_; // drainage below the graph's scale
+  std::shared_ptr<const detail::Folds> folds_; // tectonic folds; null without drawn mountains
 };
 
 // The instruction set evaluation runs on lives in strahler/simd/instruction_set.h; these names
