@@ -12,9 +12,9 @@ namespace strahler::network::detail {
 /// Where a node sits on a drawn river: the river's index and the arc lengths of the chain
 /// nodes on either side of it (the stretch of the line its own edges run along).
 struct ChainPlace {
-  int river = -1;   ///< Index in the spec's features.rivers; -1: not a chain node.
-  double lo = 0.0;  ///< Arc length (from the source) of the node upstream of it, or its own.
-  double hi = 0.0;  ///< Arc length of the node downstream of it, or its own.
+  int river = -1;  ///< Index in the spec's features.rivers; -1: not a chain node.
+  double lo = 0.0; ///< Arc length (from the source) of the node upstream of it, or its own.
+  double hi = 0.0; ///< Arc length of the node downstream of it, or its own.
 };
 
 /// The drawn lines grammar edges must keep clear of: ridgelines (never crossed, δ away) and

@@ -205,8 +205,7 @@ base::Result<std::vector<MouthSite>> withDrawnMouths(const input::WorldSpec& spe
     courses.push_back(drawnCourse(spec.features.rivers[i], land, spec.params));
     if (!courses.back())
       return base::makeError(base::ErrorCode::kInvalidInput,
-                             "river " + std::to_string(i) +
-                                 " ends more than 5 km from any shore");
+                             "river " + std::to_string(i) + " ends more than 5 km from any shore");
     MouthSite site;
     site.position = courses.back()->line.back();
     site.inward = courses.back()->inward;
@@ -218,11 +217,10 @@ base::Result<std::vector<MouthSite>> withDrawnMouths(const input::WorldSpec& spe
   const detail::Barriers barriers(spec, land, courses);
   const std::size_t drawn = sites.size();
   for (const MouthSite& m : placed) {
-    const bool nearDrawn = std::any_of(sites.begin(), sites.begin() + std::ptrdiff_t(drawn),
-                                       [&](const MouthSite& d) {
-                                         return distance(d.position, m.position) <
-                                                spec.params.mouthSpacing;
-                                       });
+    const bool nearDrawn =
+        std::any_of(sites.begin(), sites.begin() + std::ptrdiff_t(drawn), [&](const MouthSite& d) {
+          return distance(d.position, m.position) < spec.params.mouthSpacing;
+        });
     if (!nearDrawn && barriers.farFromRivers(m.position))
       sites.push_back(m);
   }

@@ -252,8 +252,7 @@ private:
     for (std::size_t k = 1; k <= last; ++k) {
       const Vec2 from = network_.nodes[parent.index()].position;
       const Vec2 p = course->node(k);
-      const double rise =
-          distance(from, p) * relief_.riverSlope(geometry::lerp(from, p, 0.5));
+      const double rise = distance(from, p) * relief_.riverSlope(geometry::lerp(from, p, 0.5));
       const double z = network_.nodes[parent.index()].elevation + std::max(rise, kMinRise);
       const Vec2 dir = distance(from, p) > 0.0 ? normalize(p - from) : directions_[parent.index()];
       parent = addNode(p, z, parent, params_.maxPriority, dir);
@@ -446,9 +445,9 @@ private:
   std::size_t highPriorityCount_ = 0;                // candidates with priority > 1
   std::vector<Vec2> directions_;                     // per node: unit flow direction, upstream
   std::optional<std::vector<MouthSite>> shoreSites_; // for gap mouths, sampled when first needed
-  std::vector<std::optional<DrawnCourse>> courses_; // drawn rivers, by feature index
-  detail::Barriers barriers_;                       // ridgelines and drawn rivers
-  std::vector<detail::ChainPlace> places_;          // per node: where it sits on a drawn river
+  std::vector<std::optional<DrawnCourse>> courses_;  // drawn rivers, by feature index
+  detail::Barriers barriers_;                        // ridgelines and drawn rivers
+  std::vector<detail::ChainPlace> places_;           // per node: where it sits on a drawn river
   RiverNetwork network_;
 };
 

@@ -8,9 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <utility>
-#include <numbers>
 
 namespace strahler::primitives {
 namespace {
