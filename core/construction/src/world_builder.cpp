@@ -57,8 +57,8 @@ base::Result<WorldData> generateWorldData(const input::WorldSpec& spec, std::str
   data.features = spec.features;
   data.projectionCenter = spec.projection.center();
   data.land = quantizeLand(spec.land);
-  data.rivers = primitives::generateRiverPrimitives(spec.params, hydrology.network,
-                                                    hydrology.analysis, *hydrology.land);
+  data.rivers = primitives::generateRiverPrimitives(
+      spec.params, hydrology.network, hydrology.analysis, *hydrology.land, spec.features);
   const auto terrainByBlock = primitives::generateTerrainPrimitives(spec, hydrology, data.rivers);
   if (progress)
     progress("primitives", 0.9);
