@@ -3,6 +3,7 @@
 #include "strahler/base/random.h"
 #include "strahler/geometry/distance.h"
 #include "strahler/network/relief_law.h"
+#include "strahler/primitives/drawn_relief.h"
 #include "strahler/primitives/quantization.h"
 
 #include <algorithm>
@@ -138,9 +139,12 @@ class BlockTerrain {
 public:
   BlockTerrain(const input::WorldSpec& spec, const analysis::Hydrology& h,
                const std::vector<const RiverPrimitive*>& riverOfNode)
-      : spec_(spec), h_(h), riverOfNode_(riverOfNode), relief_(spec, *h.land) {}
+      : spec_(spec), h_(h), riverOfNode_(riverOfNode), relief_(spec, *h.land),
+        drawn_(spec, h, relief_) {}
 
-  std::vector<TerrainPrimitive> build(network::NodeId id) const {
+  /// The primitives of block `id`, and in `bases` (when given) the elevation of the river point
+  /// each rises from.
+  std::vector<TerrainPrimitive> build(network::NodeId id, std::vector<double>* bases) const {
     const blocks::Block& block = h_.blocks.blocks[id.index()];
     std::vector<TerrainPrimitive> out;
     if (block.region.empty())
@@ -162,7 +166,7 @@ public:
           continue;
         if (!survives(seed, i, j, c))
           continue;
-        out.push_back(primitiveAt(c.position, id, curves, ridges));
+        out.push_back(primitiveAt(c.position, id, curves, ridges, bases));
       }
     return out;
   }
@@ -180,7 +184,7 @@ private:
 
   TerrainPrimitive primitiveAt(Vec2 c, network::NodeId id,
                                const std::vector<const RiverPrimitive*>& curves,
-                               const std::vector<Ridge>& ridges) const {
+                               const std::vector<Ridge>& ridges, std::vector<double>* bases) const {
     const network::RiverNode& node = h_.network.node(id);
     RiverHit a = nearestRiver(curves, c);
     if (!std::isfinite(a.distance))
@@ -203,12 +207,17 @@ private:
     if (const double steepness = length(slope); steepness > kMaxHillslope)
       slope = slope * (kMaxHillslope / steepness);
     const double relief = std::max(0.0, b.elevation - a.elevation);
-    const double amplitude =
+    double amplitude =
         kAmplitudePerMetreOfRelief * relief * smoothstep(a.distance / (0.6 * kTerrainSpacing));
+    double elevation = cz;
+    if (!drawn_.empty())
+      drawn_.lift(c, a.distance, elevation, slope, amplitude);
+    if (bases)
+      bases->push_back(a.elevation);
     TerrainPrimitive t;
     t.center = quantize(c);
     t.radius = quantize(kTerrainRadiusInSpacings * kTerrainSpacing, Quantum::kRadius);
-    t.elevation = quantize(cz, Quantum::kElevation);
+    t.elevation = quantize(elevation, Quantum::kElevation);
     slope = slope * kPlaneShare;
     t.slope = {quantize(slope.x, Quantum::kSlope), quantize(slope.y, Quantum::kSlope)};
     t.amplitude = quantize(amplitude, Quantum::kElevation);
@@ -220,20 +229,24 @@ private:
   const analysis::Hydrology& h_;
   const std::vector<const RiverPrimitive*>& riverOfNode_;
   network::ReliefLaw relief_;
+  DrawnRidges drawn_;
 };
 
 } // namespace
 
 std::vector<std::vector<TerrainPrimitive>>
 generateTerrainPrimitives(const input::WorldSpec& spec, const analysis::Hydrology& hydrology,
-                          const std::vector<RiverPrimitive>& rivers) {
+                          const std::vector<RiverPrimitive>& rivers,
+                          std::vector<std::vector<double>>* bases) {
   std::vector<const RiverPrimitive*> riverOfNode(hydrology.network.nodes.size(), nullptr);
   for (const RiverPrimitive& r : rivers)
     riverOfNode[r.node.index()] = &r;
   const BlockTerrain terrain(spec, hydrology, riverOfNode);
   std::vector<std::vector<TerrainPrimitive>> out(hydrology.network.nodes.size());
+  if (bases)
+    bases->assign(out.size(), {});
   for (std::uint32_t i = 0; i < out.size(); ++i)
-    out[i] = terrain.build(network::NodeId(i));
+    out[i] = terrain.build(network::NodeId(i), bases ? &(*bases)[i] : nullptr);
   return out;
 }
 

@@ -22,9 +22,12 @@ inline constexpr double kTerrainRadiusInSpacings = 2.2;
 /// nearest point b of its ridges: c_z = (d_a b_z + d_b a_z) / (d_a + d_b). The noise
 /// amplitude grows with the ridge–river height difference and fades out near the river; the
 /// roughness grows with the mountainousness. `rivers` holds one primitive per non-mouth node,
-/// in node order (generateRiverPrimitives).
+/// in node order (generateRiverPrimitives). Drawn ridgelines (spec.features) raise the
+/// primitives near them into crests (DrawnRidges). With `bases`, bases[i][k] is the elevation of
+/// the river point primitive k of block i rises from (what scaleRelief scales above).
 std::vector<std::vector<TerrainPrimitive>>
 generateTerrainPrimitives(const input::WorldSpec& spec, const analysis::Hydrology& hydrology,
-                          const std::vector<RiverPrimitive>& rivers);
+                          const std::vector<RiverPrimitive>& rivers,
+                          std::vector<std::vector<double>>* bases = nullptr);
 
 } // namespace strahler::primitives
