@@ -59,8 +59,8 @@ base::Result<WorldData> generateWorldData(const input::WorldSpec& spec, std::str
   data.features = spec.features;
   data.projectionCenter = spec.projection.center();
   data.land = quantizeLand(spec.land);
-  data.rivers = primitives::generateRiverPrimitives(spec.params, hydrology.network,
-                                                    hydrology.analysis, *hydrology.land);
+  data.rivers = primitives::generateRiverPrimitives(
+      spec.params, hydrology.network, hydrology.analysis, *hydrology.land, spec.features);
   // With drawn features: the river heights the primitives rise from, for the mountains' fit.
   const bool drawn = !spec.features.empty();
   std::vector<std::vector<double>> basesByBlock;

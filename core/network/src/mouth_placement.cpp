@@ -1,6 +1,10 @@
 #include "strahler/network/mouth_placement.h"
 
+#include "barriers.h"
 #include "edge_rules.h"
+
+#include "strahler/geometry/distance.h"
+#include "strahler/network/drawn_rivers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +17,8 @@ namespace {
 using geometry::Vec2;
 
 constexpr double kUserMouthMaxDistance = 5000.0; // metres from the shore
+/// Half-angle of the cone inland of a mouth in which a drawn mountain makes it face the range.
+constexpr double kFacingHalfAngle = std::numbers::pi / 6.0;
 
 /// Arc-length parametrisation of a closed ring.
 class RingWalker {
@@ -102,7 +108,17 @@ bool farFromAll(const std::vector<MouthSite>& chosen, const geometry::GridIndex&
                     [&](std::uint32_t i) { return distance(chosen[i].position, p) >= spacing; });
 }
 
-void assignPriorities(std::vector<MouthSite>& mouths, int maxPriority) {
+/// Whether a drawn mountain lies within kFacingHalfAngle of the mouth's inward normal.
+bool facesMountain(const MouthSite& m, const std::vector<input::MountainFeature>& mountains) {
+  const double cosHalf = std::cos(kFacingHalfAngle);
+  return std::any_of(mountains.begin(), mountains.end(), [&](const input::MountainFeature& f) {
+    const Vec2 to = f.position - m.position;
+    return lengthSquared(to) > 0.0 && dot(normalize(to), m.inward) >= cosHalf;
+  });
+}
+
+void assignPriorities(std::vector<MouthSite>& mouths, int maxPriority,
+                      const std::vector<input::MountainFeature>& mountains) {
   std::vector<std::size_t> seaOrder;
   for (std::size_t i = 0; i < mouths.size(); ++i) {
     if (mouths[i].onLake)
@@ -110,7 +126,13 @@ void assignPriorities(std::vector<MouthSite>& mouths, int maxPriority) {
     else
       seaOrder.push_back(i);
   }
+  // Mouths whose catchment faces a drawn mountain rank first (none without mountains).
+  std::vector<bool> facing(mouths.size(), false);
+  for (std::size_t i : seaOrder)
+    facing[i] = !mountains.empty() && facesMountain(mouths[i], mountains);
   std::stable_sort(seaOrder.begin(), seaOrder.end(), [&](std::size_t a, std::size_t b) {
+    if (facing[a] != facing[b])
+      return bool(facing[a]);
     return mouths[a].accessibility > mouths[b].accessibility;
   });
   for (std::size_t rank = 0; rank < seaOrder.size(); ++rank) {
@@ -120,7 +142,8 @@ void assignPriorities(std::vector<MouthSite>& mouths, int maxPriority) {
 }
 
 std::vector<MouthSite> placeAutomatic(const input::Params& params,
-                                      const geometry::PolygonIndex& land) {
+                                      const geometry::PolygonIndex& land,
+                                      const std::vector<input::MountainFeature>& mountains) {
   std::vector<Candidate> candidates = sampleShore(params, land, true);
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& a, const Candidate& b) {
@@ -144,7 +167,7 @@ std::vector<MouthSite> placeAutomatic(const input::Params& params,
     if (!ringHasMouth[c.ring] && !land.isHole(c.ring) &&
         farFromAll(chosen, grid, c.site.position, params.sigma))
       take(c);
-  assignPriorities(chosen, params.maxPriority);
+  assignPriorities(chosen, params.maxPriority, mountains);
   return chosen;
 }
 
@@ -171,6 +194,39 @@ base::Result<std::vector<MouthSite>> snapUserMouths(const input::WorldSpec& spec
   return sites;
 }
 
+/// The drawn rivers' mouths first (priority maxPriority), then the mouths of `placed` that lie
+/// at least mouthSpacing from every drawn mouth and more than σ from every drawn river.
+base::Result<std::vector<MouthSite>> withDrawnMouths(const input::WorldSpec& spec,
+                                                     const geometry::PolygonIndex& land,
+                                                     std::vector<MouthSite> placed) {
+  std::vector<std::optional<DrawnCourse>> courses;
+  std::vector<MouthSite> sites;
+  for (std::size_t i = 0; i < spec.features.rivers.size(); ++i) {
+    courses.push_back(drawnCourse(spec.features.rivers[i], land, spec.params));
+    if (!courses.back())
+      return base::makeError(base::ErrorCode::kInvalidInput,
+                             "river " + std::to_string(i) + " ends more than 5 km from any shore");
+    MouthSite site;
+    site.position = courses.back()->line.back();
+    site.inward = courses.back()->inward;
+    site.priority = spec.params.maxPriority;
+    site.onLake = courses.back()->onLake;
+    site.drawnRiver = static_cast<int>(i);
+    sites.push_back(site);
+  }
+  const detail::Barriers barriers(spec, land, courses);
+  const std::size_t drawn = sites.size();
+  for (const MouthSite& m : placed) {
+    const bool nearDrawn =
+        std::any_of(sites.begin(), sites.begin() + std::ptrdiff_t(drawn), [&](const MouthSite& d) {
+          return distance(d.position, m.position) < spec.params.mouthSpacing;
+        });
+    if (!nearDrawn && barriers.farFromRivers(m.position))
+      sites.push_back(m);
+  }
+  return sites;
+}
+
 } // namespace
 
 std::vector<MouthSite> shoreSites(const input::Params& params, const geometry::PolygonIndex& land) {
@@ -182,9 +238,15 @@ std::vector<MouthSite> shoreSites(const input::Params& params, const geometry::P
 
 base::Result<std::vector<MouthSite>> placeMouths(const input::WorldSpec& spec,
                                                  const geometry::PolygonIndex& land) {
-  if (!spec.mouths.empty())
-    return snapUserMouths(spec, land);
-  std::vector<MouthSite> mouths = placeAutomatic(spec.params, land);
+  if (!spec.mouths.empty()) {
+    STRAHLER_ASSIGN_OR_RETURN(std::vector<MouthSite> user, snapUserMouths(spec, land));
+    if (spec.features.rivers.empty())
+      return user;
+    return withDrawnMouths(spec, land, std::move(user));
+  }
+  std::vector<MouthSite> mouths = placeAutomatic(spec.params, land, spec.features.mountains);
+  if (!spec.features.rivers.empty())
+    return withDrawnMouths(spec, land, std::move(mouths));
   if (mouths.empty())
     return base::makeError(base::ErrorCode::kInvalidInput,
                            "no river mouth fits on this coastline: the land is too small or "

@@ -1,11 +1,13 @@
 #include "strahler/network/network_growth.h"
 
+#include "barriers.h"
 #include "edge_rules.h"
 
 #include "strahler/base/random.h"
 #include "strahler/geometry/distance.h"
 #include "strahler/geometry/distance_transform.h"
 #include "strahler/geometry/grid_index.h"
+#include "strahler/network/drawn_rivers.h"
 #include "strahler/network/relief_law.h"
 
 #include <algorithm>
@@ -53,13 +55,17 @@ public:
         rng_(spec.params.seed, kGrowthStream),
         edges_(land.bounds().expanded(spec.params.edgeLength), spec.params.sigma),
         nodeGrid_(land.bounds().expanded(spec.params.edgeLength), spec.params.edgeLength),
-        heaps_(static_cast<std::size_t>(std::max(spec.params.maxPriority, 12)) + 1) {}
+        heaps_(static_cast<std::size_t>(std::max(spec.params.maxPriority, 12)) + 1),
+        courses_(drawnCourses(spec, land)), barriers_(spec, land, courses_) {}
 
   RiverNetwork run(const std::vector<MouthSite>& mouths, const base::ProgressCallback& progress,
                    double landArea) {
     network_.edgeLength = params_.edgeLength;
     for (const MouthSite& m : mouths)
       addMouth(m);
+    for (std::size_t i = 0; i < mouths.size(); ++i)
+      if (mouths[i].drawnRiver >= 0)
+        addChain(network_.mouths[i].node, mouths[i].drawnRiver);
     growAll(progress, landArea);
     for (int round = 0; round < kGapRounds && seedGaps() > 0; ++round)
       growAll(progress, landArea);
@@ -204,7 +210,8 @@ private:
       const MouthSite& site = (*shoreSites_)[i];
       const Vec2 child = site.position + site.inward * params_.edgeLength;
       const double z = std::max(params_.edgeLength * relief_.riverSlope(child), kMinRise);
-      if (clearOfEdges(site.position, child, NodeId::invalid()) && slopesBelowKappa(child, z)) {
+      if (clearOfEdges(site.position, child, NodeId::invalid()) && slopesBelowKappa(child, z) &&
+          barriers_.allows(site.position, child, {})) {
         addMouth(site); // a candidate: growth gives it its children
         return true;
       }
@@ -216,6 +223,41 @@ private:
     const NodeId id = addNode(m.position, 0.0, NodeId::invalid(), m.priority, m.inward);
     network_.mouths.push_back({id, m.inward, m.onLake});
     network_.nodes[id.index()].tree = static_cast<std::uint32_t>(network_.mouths.size() - 1);
+  }
+
+  /// The courses of the drawn rivers (spec.features.rivers), by index.
+  static std::vector<std::optional<DrawnCourse>> drawnCourses(const input::WorldSpec& spec,
+                                                              const geometry::PolygonIndex& land) {
+    std::vector<std::optional<DrawnCourse>> courses;
+    for (const input::RiverFeature& r : spec.features.rivers)
+      courses.push_back(drawnCourse(r, land, spec.params));
+    return courses;
+  }
+
+  /// The chain of drawn river `river` above its mouth node: one node per chain point of its
+  /// course, exactly on the line, each child of the one below it, with priority maxPriority
+  /// (the trunks) and the relief law's rise over the step (so monotone upstream). They are
+  /// placed before growth starts, whatever the rules say: the grammar grows around them.
+  void addChain(NodeId mouth, int river) {
+    const auto& course = courses_[static_cast<std::size_t>(river)];
+    if (!course)
+      return;
+    const std::size_t last = course->chain.size() - 1;
+    const auto placeOf = [&](std::size_t k) {
+      return detail::ChainPlace{river, course->chain[std::min(k + 1, last)],
+                                course->chain[k == 0 ? 0 : k - 1]};
+    };
+    places_[mouth.index()] = placeOf(0);
+    NodeId parent = mouth;
+    for (std::size_t k = 1; k <= last; ++k) {
+      const Vec2 from = network_.nodes[parent.index()].position;
+      const Vec2 p = course->node(k);
+      const double rise = distance(from, p) * relief_.riverSlope(geometry::lerp(from, p, 0.5));
+      const double z = network_.nodes[parent.index()].elevation + std::max(rise, kMinRise);
+      const Vec2 dir = distance(from, p) > 0.0 ? normalize(p - from) : directions_[parent.index()];
+      parent = addNode(p, z, parent, params_.maxPriority, dir);
+      places_[parent.index()] = placeOf(k);
+    }
   }
 
   NodeId addNode(Vec2 p, double z, NodeId parent, int priority, Vec2 dir) {
@@ -239,6 +281,7 @@ private:
     nodeGrid_.insert(point, id.value);
     network_.nodes.push_back(node);
     directions_.push_back(dir);
+    places_.push_back({});
     pushCandidate(id);
     return id;
   }
@@ -305,8 +348,29 @@ private:
 
   void expand(NodeId id) {
     const int n = network_.nodes[id.index()].priority;
+    if (places_[id.index()].river >= 0) {
+      expandChainNode(id, n);
+      return;
+    }
     for (const ChildRequest& child : applyRules(n))
       tryChild(id, child);
+  }
+
+  /// A node of a drawn river's chain: its source grows headwaters like a node of priority 1
+  /// (the drawn river begins there); every other chain node (it has its chain child already)
+  /// takes one tributary, branching off at branchAngle on a random side (the other side if
+  /// that fails) with a priority drawn as rule 2.2's side branch's.
+  void expandChainNode(NodeId id, int n) {
+    if (network_.nodes[id.index()].children.empty()) {
+      for (const ChildRequest& child : applyRules(1))
+        tryChild(id, child);
+      return;
+    }
+    const double branch = params_.branchAngle * kDegree;
+    const double side = rng_.chance(0.5) ? 1.0 : -1.0;
+    const int m = n > 1 ? 1 + static_cast<int>(rng_.below(static_cast<std::uint32_t>(n - 1))) : 1;
+    if (!tryChild(id, {side * branch, m}))
+      tryChild(id, {-side * branch, m});
   }
 
   /// Adds the child if one of a few jittered directions passes valid(); whether it did.
@@ -335,7 +399,8 @@ private:
     if (fromMouth ? !detail::mouthEdgeValid(land_, parent.position, p, params_.delta)
                   : !detail::innerEdgeValid(land_, parent.position, p, params_.delta))
       return false;
-    return clearOfOtherEdges(parentId, p) && slopesBelowKappa(p, z);
+    return clearOfOtherEdges(parentId, p) && slopesBelowKappa(p, z) &&
+           barriers_.allows(parent.position, p, places_[parentId.index()]);
   }
 
   bool clearOfOtherEdges(NodeId parentId, Vec2 p) const {
@@ -380,6 +445,9 @@ private:
   std::size_t highPriorityCount_ = 0;                // candidates with priority > 1
   std::vector<Vec2> directions_;                     // per node: unit flow direction, upstream
   std::optional<std::vector<MouthSite>> shoreSites_; // for gap mouths, sampled when first needed
+  std::vector<std::optional<DrawnCourse>> courses_;  // drawn rivers, by feature index
+  detail::Barriers barriers_;                        // ridgelines and drawn rivers
+  std::vector<detail::ChainPlace> places_;           // per node: where it sits on a drawn river
   RiverNetwork network_;
 };
 

@@ -2,11 +2,15 @@
 
 #include "strahler/base/random.h"
 #include "strahler/geometry/distance.h"
+#include "strahler/network/drawn_rivers.h"
 #include "strahler/primitives/quantization.h"
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <optional>
+#include <utility>
 
 namespace strahler::primitives {
 namespace {
@@ -176,9 +180,9 @@ void keepClearOfShore(std::vector<Vec2>& points, Vec2 a, Vec2 b, const geometry:
   }
 }
 
-RiverPrimitive buildSection(const input::Params& params, const network::RiverNetwork& net,
-                            const analysis::NetworkAnalysis& a, const geometry::PolygonIndex& land,
-                            network::NodeId id) {
+/// A section's type, widths, depths and radius from the flows at its two ends.
+RiverPrimitive sectionHead(const network::RiverNetwork& net, const analysis::NetworkAnalysis& a,
+                           network::NodeId id) {
   const network::RiverNode& node = net.node(id);
   RiverPrimitive r;
   r.node = id;
@@ -188,6 +192,31 @@ RiverPrimitive buildSection(const input::Params& params, const network::RiverNet
   r.depthUp = quantize(channelDepth(a.flow[id.index()]), Quantum::kElevation);
   r.depthDown = quantize(channelDepth(a.flow[node.parent.index()]), Quantum::kElevation);
   r.radius = quantize(valleyRadius(r.type, std::max(r.widthUp, r.widthDown)), Quantum::kRadius);
+  return r;
+}
+
+/// Sets r's curve to `points` (upstream node first), u_z falling linearly with arc length from
+/// the upstream node to the downstream one, the ends exactly the two nodes.
+void setCurve(RiverPrimitive& r, const network::RiverNetwork& net, network::NodeId id,
+              const std::vector<Vec2>& points) {
+  const network::RiverNode& node = net.node(id);
+  const double zUp = node.elevation, zDown = net.node(node.parent).elevation;
+  std::vector<double> s{0.0};
+  for (std::size_t i = 1; i < points.size(); ++i)
+    s.push_back(s.back() + distance(points[i - 1], points[i]));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double z = zUp + (zDown - zUp) * (s.back() > 0 ? s[i] / s.back() : 1.0);
+    r.curve.push_back({quantize(points[i]), quantize(z, Quantum::kElevation)});
+  }
+  r.curve.front() = {node.position, node.elevation};
+  r.curve.back() = {net.node(node.parent).position, net.node(node.parent).elevation};
+}
+
+RiverPrimitive buildSection(const input::Params& params, const network::RiverNetwork& net,
+                            const analysis::NetworkAnalysis& a, const geometry::PolygonIndex& land,
+                            network::NodeId id) {
+  const network::RiverNode& node = net.node(id);
+  RiverPrimitive r = sectionHead(net, a, id);
 
   base::Rng rng(params.seed, base::mixHash(kRiverStream, id.value));
   const Meander meander = meanderFor(r.type, r.widthUp, rng);
@@ -214,18 +243,61 @@ RiverPrimitive buildSection(const input::Params& params, const network::RiverNet
   }
   keepClearOfShore(points, node.position, net.node(node.parent).position, land,
                    kShoreClearance * params.delta);
+  setCurve(r, net, id, points);
+  return r;
+}
 
-  // u_z falls linearly with arc length from the upstream node to the downstream one.
-  const double zUp = node.elevation, zDown = net.node(node.parent).elevation;
-  std::vector<double> s{0.0};
-  for (std::size_t i = 1; i < points.size(); ++i)
-    s.push_back(s.back() + distance(points[i - 1], points[i]));
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const double z = zUp + (zDown - zUp) * (s.back() > 0 ? s[i] / s.back() : 1.0);
-    r.curve.push_back({quantize(points[i]), quantize(z, Quantum::kElevation)});
+/// Most spacing of the points of a drawn river's curve, m (as grown curves' below 50 m).
+constexpr double kDrawnCurveStep = 50.0;
+
+/// Key of a stored node position: its multiples of the position quantum.
+using PositionKey = std::pair<long long, long long>;
+PositionKey keyOf(Vec2 p) {
+  return {std::llround(p.x / Quantum::kPosition), std::llround(p.y / Quantum::kPosition)};
+}
+
+/// The chains of the drawn rivers as the quantized network holds them: per stored node
+/// position, the (river, chain index) of the chain nodes there.
+struct DrawnChains {
+  std::vector<std::optional<network::DrawnCourse>> courses;
+  std::multimap<PositionKey, std::pair<std::size_t, std::size_t>> at;
+
+  /// The course and chain index k of the edge from `id` to its parent when it joins chain
+  /// nodes k and k − 1 of one drawn river; none otherwise.
+  std::optional<std::pair<const network::DrawnCourse*, std::size_t>>
+  edge(const network::RiverNetwork& net, network::NodeId id) const {
+    const network::RiverNode& node = net.node(id);
+    const auto [begin, end] = at.equal_range(keyOf(node.position));
+    for (auto it = begin; it != end; ++it) {
+      const auto [river, k] = it->second;
+      const network::DrawnCourse& c = *courses[river];
+      if (k > 0 && keyOf(net.node(node.parent).position) == keyOf(quantize(c.node(k - 1))))
+        return std::make_pair(&c, k);
+    }
+    return std::nullopt;
   }
-  r.curve.front() = {node.position, node.elevation};
-  r.curve.back() = {net.node(node.parent).position, net.node(node.parent).elevation};
+};
+
+DrawnChains drawnChains(const input::Params& params, const geometry::PolygonIndex& land,
+                        const input::Features& features) {
+  DrawnChains chains;
+  for (std::size_t r = 0; r < features.rivers.size(); ++r) {
+    chains.courses.push_back(network::drawnCourse(features.rivers[r], land, params));
+    if (const auto& c = chains.courses.back())
+      for (std::size_t k = 0; k < c->chain.size(); ++k)
+        chains.at.emplace(keyOf(quantize(c->node(k))), std::make_pair(r, k));
+  }
+  return chains;
+}
+
+/// The section of a drawn river between chain nodes k (id) and k − 1 (its parent): the drawn
+/// line between them, every vertex kept, with no meander: the channel is carved where it was
+/// drawn.
+RiverPrimitive buildDrawnSection(const network::RiverNetwork& net,
+                                 const analysis::NetworkAnalysis& a, network::NodeId id,
+                                 const network::DrawnCourse& course, std::size_t k) {
+  RiverPrimitive r = sectionHead(net, a, id);
+  setCurve(r, net, id, course.subPath(course.chain[k], course.chain[k - 1], kDrawnCurveStep));
   return r;
 }
 
@@ -270,12 +342,20 @@ double valleyRadius(RiverType type, double width) noexcept {
 std::vector<RiverPrimitive> generateRiverPrimitives(const input::Params& params,
                                                     const network::RiverNetwork& network,
                                                     const analysis::NetworkAnalysis& analysis,
-                                                    const geometry::PolygonIndex& land) {
+                                                    const geometry::PolygonIndex& land,
+                                                    const input::Features& features) {
+  const DrawnChains chains = drawnChains(params, land, features);
   std::vector<RiverPrimitive> rivers;
   rivers.reserve(network.edgeCount());
-  for (std::uint32_t i = 0; i < network.nodes.size(); ++i)
-    if (network.nodes[i].parent.valid())
-      rivers.push_back(buildSection(params, network, analysis, land, network::NodeId(i)));
+  for (std::uint32_t i = 0; i < network.nodes.size(); ++i) {
+    if (!network.nodes[i].parent.valid())
+      continue;
+    const network::NodeId id(i);
+    if (const auto drawn = chains.at.empty() ? std::nullopt : chains.edge(network, id))
+      rivers.push_back(buildDrawnSection(network, analysis, id, *drawn->first, drawn->second));
+    else
+      rivers.push_back(buildSection(params, network, analysis, land, id));
+  }
   return rivers;
 }
 

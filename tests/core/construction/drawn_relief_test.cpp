@@ -1,4 +1,6 @@
-// Issue 27: the artist's drawn mountains and ridgeline shape the relief of Corsica.
+// Issue 27: the artist's drawn mountains and ridgeline shape the relief of Corsica (the
+// drawn features of tests/support/corsica_drawn_features.h).
+#include "corsica_drawn_features.h"
 #include "test_worlds.h"
 
 #include "strahler/construction/world.h"
@@ -21,32 +23,6 @@ namespace strahler {
 namespace {
 
 using geometry::Vec2;
-
-/// The mountains and the main divide of issue 27's Corsica fixture (WGS84), in the local frame
-/// of `spec` (tests/data/corsica.geojson).
-input::Features corsicaFeatures(const input::WorldSpec& spec) {
-  input::Features f;
-  const struct {
-    double lon, lat, elevation;
-  } peaks[] = {{8.9456, 42.3797, 2706.0},  // Monte Cinto
-               {9.0567, 42.2178, 2622.0},  // Monte Rotondo
-               {9.1003, 42.1556, 2389.0},  // Monte d'Oro
-               {9.1306, 42.0711, 2352.0},  // Monte Renoso
-               {9.2028, 41.8553, 2134.0}}; // Monte Incudine
-  for (const auto& p : peaks) {
-    input::MountainFeature m;
-    m.lonLat = {p.lon, p.lat};
-    m.position = spec.projection.forward(m.lonLat);
-    m.elevation = p.elevation;
-    f.mountains.push_back(m);
-  }
-  input::RidgeFeature ridge;
-  ridge.lonLat = {{8.83, 42.44}, {8.95, 42.38}, {9.06, 42.22}, {9.13, 42.07}, {9.20, 41.86}};
-  for (Vec2 ll : ridge.lonLat)
-    ridge.line.push_back(spec.projection.forward(ll));
-  f.ridges.push_back(ridge);
-  return f;
-}
 
 /// Corsica with (or without) the drawn features, generated once for the suite.
 struct Generated {
@@ -71,7 +47,7 @@ protected:
   static void SetUpTestSuite() {
     input::WorldSpec spec = test_support::corsicaSpec();
     plain_ = new Generated(generate(spec));
-    spec.features = corsicaFeatures(spec);
+    spec.features = test_support::corsicaDrawnFeatures(spec);
     drawn_ = new Generated(generate(spec));
     // Not an assertion (wall time on a shared machine): the figure issue 27 asks for.
     std::printf(
@@ -101,7 +77,7 @@ double highestNear(const construction::World& world, Vec2 p, double reach, doubl
 TEST(DrawnMountainousness, NearAMountainItIsOneAndFarAwayUnchanged) {
   const input::WorldSpec plainSpec = test_support::corsicaSpec();
   input::WorldSpec spec = plainSpec;
-  spec.features = corsicaFeatures(spec);
+  spec.features = test_support::corsicaDrawnFeatures(spec);
   const geometry::PolygonIndex land(spec.land);
   const network::ReliefLaw plainLaw(plainSpec, land), law(spec, land);
   for (const input::MountainFeature& m : spec.features.mountains) {

@@ -15,6 +15,7 @@ struct MouthSite {
   int priority = 1;           ///< Grammar priority index s of the tree's root.
   bool onLake = false;        ///< On a polygon hole (lake) rather than the sea coast.
   double accessibility = 0.0; ///< Land fraction within accessibilityRadius (concavity).
+  int drawnRiver = -1;        ///< Index of the drawn river it is the mouth of; -1: none.
 };
 
 /// Places mouths along Γ (Section 4.1): the shore is sampled every e/2, each sample scored by
@@ -22,7 +23,12 @@ struct MouthSite {
 /// whose first edge could not grow are dropped, then the best are taken greedily at least
 /// mouthSpacing apart, and every island that can hold a river gets one. Priorities follow
 /// the rank like Strahler orders: the best mouth gets maxPriority, the next two one less,
-/// the next four one less again, and so on; lake mouths get priority 1.
+/// the next four one less again, and so on; lake mouths get priority 1. Mouths whose inward
+/// normal points within 30° of a drawn mountain (spec.features.mountains) rank before the
+/// others, so the trees that drain the ranges grow the longest trunks.
+/// Drawn rivers (spec.features.rivers) put their mouths first, at the line's last point
+/// snapped to the shore (drawnCourse), with priority maxPriority; placed or user mouths within
+/// mouthSpacing of a drawn mouth, or within σ of a drawn river, are left out.
 /// User mouths in `spec` replace all this: each is snapped to the nearest shore point
 /// (kInvalidInput if none lies within 5 km).
 base::Result<std::vector<MouthSite>> placeMouths(const input::WorldSpec& spec,

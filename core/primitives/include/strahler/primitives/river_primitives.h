@@ -2,6 +2,7 @@
 
 #include "strahler/analysis/network_analysis.h"
 #include "strahler/geometry/polygon_index.h"
+#include "strahler/input/features.h"
 #include "strahler/input/params.h"
 #include "strahler/network/river_network.h"
 #include "strahler/primitives/river_primitive.h"
@@ -132,9 +133,13 @@ inline double riverWeight(double width, double radius, double d, double floor = 
 /// length from the upstream node to the downstream node, and width and depth vary from the
 /// upstream node's flow to the downstream node's, so sections agree where they meet. Curve
 /// points keep half of δ from the shore of `land` (or as much as their straight edge does).
+/// The section between two consecutive chain nodes of a drawn river of `features` (recognised
+/// by their stored positions: network::drawnCourse's chain points, quantized) is the drawn
+/// line between them instead, every vertex kept, points at most 50 m apart, not perturbed.
 std::vector<RiverPrimitive> generateRiverPrimitives(const input::Params& params,
                                                     const network::RiverNetwork& network,
                                                     const analysis::NetworkAnalysis& analysis,
-                                                    const geometry::PolygonIndex& land);
+                                                    const geometry::PolygonIndex& land,
+                                                    const input::Features& features = {});
 
 } // namespace strahler::primitives
