@@ -109,7 +109,7 @@ double highestWithin(const World& world, Vec2 p, double reach, double spacing) {
 }
 
 void fitDrawnMountains(const input::WorldSpec& spec, WorldData& data,
-                       const std::vector<double>& bases) {
+                       const std::vector<primitives::TerrainBase>& bases) {
   const input::Features& features = spec.features;
   const auto& mountains = features.mountains;
   std::vector<Search> searches(mountains.size());
@@ -130,16 +130,20 @@ void fitDrawnMountains(const input::WorldSpec& spec, WorldData& data,
     for (std::size_t i : near.terrainIndex)
       for (std::size_t m = 0; m < mountains.size(); ++m)
         if (distance(data.terrain[i].center, mountains[m].position) <= kSummitReach)
-          floors[m] = std::min(floors[m], bases[i]);
+          floors[m] = std::min(floors[m], bases[i].elevation);
+    std::vector<primitives::TerrainBase> nearBases;
+    for (std::size_t i : near.terrainIndex)
+      nearBases.push_back(bases[i]);
     for (int round = 0; round < kMaxRounds; ++round) {
       WorldData scaled = near.data;
       for (std::size_t k = 0; k < scaled.terrain.size(); ++k) {
         const double g = primitives::mountainGain(features, radii, gains, scaled.terrain[k].center);
         if (g != 1.0)
-          scaled.terrain[k] =
-              primitives::scaleRelief(scaled.terrain[k], bases[near.terrainIndex[k]], g);
+          scaled.terrain[k] = primitives::scaleRelief(scaled.terrain[k], nearBases[k].elevation, g);
       }
+      primitives::liftCrests(spec, scaled.terrain, nearBases);
       primitives::fitValleyRadii(scaled.rivers, scaled.terrain);
+      primitives::keepValleysOffCrests(spec, scaled.rivers);
       const World world(std::move(scaled));
       bool allDone = true;
       for (std::size_t m = 0; m < mountains.size(); ++m) {
@@ -182,11 +186,13 @@ void fitDrawnMountains(const input::WorldSpec& spec, WorldData& data,
     for (std::size_t i = 0; i < data.terrain.size(); ++i) {
       const double g = primitives::mountainGain(features, radii, gains, data.terrain[i].center);
       if (g != 1.0)
-        data.terrain[i] = primitives::scaleRelief(data.terrain[i], bases[i], g);
+        data.terrain[i] = primitives::scaleRelief(data.terrain[i], bases[i].elevation, g);
     }
   }
+  primitives::liftCrests(spec, data.terrain, bases);
   data.rivers = unfitted;
   primitives::fitValleyRadii(data.rivers, data.terrain);
+  primitives::keepValleysOffCrests(spec, data.rivers);
 }
 
 } // namespace strahler::construction::detail

@@ -63,14 +63,14 @@ base::Result<WorldData> generateWorldData(const input::WorldSpec& spec, std::str
       spec.params, hydrology.network, hydrology.analysis, *hydrology.land, spec.features);
   // With drawn features: the river heights the primitives rise from, for the mountains' fit.
   const bool drawn = !spec.features.empty();
-  std::vector<std::vector<double>> basesByBlock;
+  std::vector<std::vector<primitives::TerrainBase>> basesByBlock;
   const auto terrainByBlock = primitives::generateTerrainPrimitives(
       spec, hydrology, data.rivers, drawn ? &basesByBlock : nullptr);
   if (progress)
     progress("primitives", 0.9);
 
   // Group by block: block i holds its terrain and the river section below node i.
-  std::vector<double> bases;
+  std::vector<primitives::TerrainBase> bases;
   std::uint32_t river = 0;
   for (std::uint32_t i = 0; i < hydrology.network.nodes.size(); ++i) {
     BlockPrimitives b;

@@ -1,7 +1,9 @@
 #include "strahler/primitives/drawn_relief.h"
 
 #include "strahler/geometry/distance.h"
+#include "strahler/network/relief_law.h"
 #include "strahler/primitives/quantization.h"
+#include "strahler/primitives/river_primitives.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,15 +16,15 @@ using geometry::Vec2;
 
 /// Arc length between the crest's height samples, m.
 constexpr double kCrestStep = 100.0;
-/// How far from a crest sample the analysis' ridge elevations count (the law's crest), m.
-constexpr double kCrestSearch = 1500.0;
 /// Half-window of the running max and mean that make the law's crest continuous, in samples.
 constexpr std::ptrdiff_t kCrestSmoothing = 10;
 /// Share of the noise amplitude taken off on a crest, and the distance over which it returns.
 constexpr double kCrestCalm = 0.7;
 constexpr double kCrestCalmReach = 1000.0;
+/// Share of a hillslope's gradient a primitive's plane keeps (terrain_primitives.cpp).
+constexpr double kPlaneShare = 0.25;
 /// Steepest plane a scaled primitive keeps (terrain_primitives.cpp: tan 40° × plane share).
-constexpr double kMaxPlane = 0.84 * 0.25;
+constexpr double kMaxPlane = 0.84 * kPlaneShare;
 
 double smoothstep(double t) noexcept {
   t = std::clamp(t, 0.0, 1.0);
@@ -71,77 +73,96 @@ std::vector<double> smoothCrest(const std::vector<double>& raw) {
 
 } // namespace
 
-DrawnRidges::DrawnRidges(const input::WorldSpec& spec, const analysis::Hydrology& hydrology,
-                         const network::ReliefLaw& law) {
+void liftCrests(const input::WorldSpec& spec, std::vector<TerrainPrimitive>& terrain,
+                std::span<const TerrainBase> bases) {
+  if (spec.features.ridges.empty())
+    return;
+  const double area = geometry::area(spec.land);
   for (const input::RidgeFeature& ridge : spec.features.ridges) {
-    Crest c;
-    c.line = ridge.line;
-    c.halfWidth = network::ridgeHalfWidth(ridge, law.landAreaM2());
-    c.along.push_back(0.0);
-    for (std::size_t k = 1; k < c.line.size(); ++k)
-      c.along.push_back(c.along.back() + distance(c.line[k - 1], c.line[k]));
-    const auto samples = static_cast<std::size_t>(std::floor(c.along.back() / kCrestStep)) + 2;
-    if (ridge.elevation) {
-      c.height.assign(samples, *ridge.elevation);
-    } else {
-      // The analysis' ridge elevations near the line, then the highest near each sample.
-      std::vector<std::pair<AlongHit, double>> near;
-      const blocks::BlockSet& blocks = hydrology.blocks;
-      for (std::size_t v = 0; v < blocks.vertices.size(); ++v) {
-        const AlongHit hit = nearestAlong(c.line, c.along, blocks.vertices[v].position);
-        if (hit.distance <= kCrestSearch)
-          near.emplace_back(hit, hydrology.analysis.ridgeElevation[v]);
-      }
-      std::vector<double> raw(samples, -std::numeric_limits<double>::infinity());
-      for (const auto& [hit, z] : near) {
-        // Samples within kCrestSearch of the vertex along the line (a bound: |Δs| ≤ search).
-        const double reach = std::sqrt(kCrestSearch * kCrestSearch - hit.distance * hit.distance);
-        const auto k0 =
-            static_cast<std::size_t>(std::max(0.0, std::ceil((hit.along - reach) / kCrestStep)));
-        for (std::size_t k = k0;
-             k < samples && static_cast<double>(k) * kCrestStep <= hit.along + reach; ++k)
-          raw[k] = std::max(raw[k], z);
-      }
-      // Samples with no vertex near take the nearest sample's height (0 when none has one).
-      double last = -std::numeric_limits<double>::infinity();
-      for (double& z : raw)
-        z = std::isfinite(z) ? (last = z) : last;
-      last = -std::numeric_limits<double>::infinity();
-      for (auto it = raw.rbegin(); it != raw.rend(); ++it)
-        *it = std::isfinite(*it) ? (last = *it) : last;
-      for (double& z : raw)
-        z = std::isfinite(z) ? z : 0.0;
-      c.height = smoothCrest(raw);
+    const std::vector<Vec2>& line = ridge.line;
+    const double halfWidth = network::ridgeHalfWidth(ridge, area);
+    std::vector<double> along{0.0};
+    geometry::Aabb box;
+    for (std::size_t k = 0; k < line.size(); ++k) {
+      box.add(line[k]);
+      if (k > 0)
+        along.push_back(along.back() + distance(line[k - 1], line[k]));
     }
-    crests_.push_back(std::move(c));
+    box = box.expanded(halfWidth);
+    // The primitives within the half-width, and the highest e + flank d near each sample.
+    std::vector<std::pair<std::size_t, AlongHit>> near;
+    for (std::size_t i = 0; i < terrain.size(); ++i)
+      if (box.contains(terrain[i].center))
+        if (const AlongHit hit = nearestAlong(line, along, terrain[i].center);
+            hit.distance < halfWidth)
+          near.emplace_back(i, hit);
+    const auto samples = static_cast<std::size_t>(std::floor(along.back() / kCrestStep)) + 2;
+    std::vector<double> raw(samples,
+                            ridge.elevation.value_or(-std::numeric_limits<double>::infinity()));
+    for (const auto& [i, hit] : near)
+      if (hit.distance <= kCrestReach) {
+        const auto k = std::min(static_cast<std::size_t>(hit.along / kCrestStep), samples - 2);
+        const double top = terrain[i].elevation + kCrestFlank * hit.distance;
+        raw[k] = std::max(raw[k], top);
+        raw[k + 1] = std::max(raw[k + 1], top);
+      }
+    // Samples with nothing near take the nearest sample's height (0 when none has one).
+    double last = -std::numeric_limits<double>::infinity();
+    for (double& z : raw)
+      z = std::isfinite(z) ? (last = z) : last;
+    last = -std::numeric_limits<double>::infinity();
+    for (auto it = raw.rbegin(); it != raw.rend(); ++it)
+      *it = std::isfinite(*it) ? (last = *it) : last;
+    for (double& z : raw)
+      z = std::isfinite(z) ? z : 0.0;
+    const std::vector<double> crest = smoothCrest(raw);
+    for (const auto& [i, hit] : near) {
+      TerrainPrimitive& t = terrain[i];
+      const double s = hit.along / kCrestStep;
+      const auto k = std::min(static_cast<std::size_t>(s), samples - 2);
+      const double f = std::clamp(s - static_cast<double>(k), 0.0, 1.0);
+      const double tent = crest[k] + (crest[k + 1] - crest[k]) * f - kCrestFlank * hit.distance;
+      const double clear = smoothstep(bases[i].distance / kCrestRiverClearance);
+      const double hold = clear * smoothstep(2.0 * (1.0 - hit.distance / halfWidth));
+      if (tent > t.elevation && hold > 0.0) {
+        const Vec2 down = hit.distance > 1.0
+                              ? (t.center - hit.point) * (-kCrestFlank * kPlaneShare / hit.distance)
+                              : Vec2{};
+        const Vec2 slope = t.slope * (1.0 - hold) + down * hold;
+        t.elevation = quantize(t.elevation + (tent - t.elevation) * hold, Quantum::kElevation);
+        t.slope = {quantize(slope.x, Quantum::kSlope), quantize(slope.y, Quantum::kSlope)};
+      }
+      const double calm =
+          1.0 - kCrestCalm * clear * smoothstep(1.0 - hit.distance / kCrestCalmReach);
+      t.amplitude = quantize(t.amplitude * calm, Quantum::kElevation);
+    }
   }
 }
 
-double DrawnRidges::crestAt(std::size_t i, Vec2 p) const noexcept {
-  const Crest& c = crests_[i];
-  const double s = nearestAlong(c.line, c.along, p).along / kCrestStep;
-  const auto k = std::min(static_cast<std::size_t>(s), c.height.size() - 2);
-  const double t = std::clamp(s - static_cast<double>(k), 0.0, 1.0);
-  return c.height[k] + (c.height[k + 1] - c.height[k]) * t;
-}
-
-void DrawnRidges::lift(Vec2 c, double riverDistance, double& elevation, Vec2& slope,
-                       double& amplitude) const noexcept {
-  const double clear = smoothstep(riverDistance / kCrestRiverClearance);
-  for (std::size_t i = 0; i < crests_.size(); ++i) {
-    const Crest& crest = crests_[i];
-    const AlongHit hit = nearestAlong(crest.line, crest.along, c);
-    if (hit.distance >= crest.halfWidth)
-      continue;
-    const double hold = clear * smoothstep(2.0 * (1.0 - hit.distance / crest.halfWidth));
-    const double tent = crestAt(i, c) - kCrestFlank * hit.distance;
-    if (tent > elevation) {
-      const Vec2 down =
-          hit.distance > 1.0 ? (c - hit.point) * (-kCrestFlank / hit.distance) : Vec2{};
-      elevation += (tent - elevation) * hold;
-      slope = slope * (1.0 - hold) + down * hold;
+void keepValleysOffCrests(const input::WorldSpec& spec, std::vector<RiverPrimitive>& rivers) {
+  for (const input::RidgeFeature& ridge : spec.features.ridges) {
+    geometry::Aabb box;
+    for (Vec2 p : ridge.line)
+      box.add(p);
+    for (RiverPrimitive& r : rivers) {
+      if (!supportBox(r).intersects(box.expanded(kValleyCrestMargin)))
+        continue;
+      double nearest = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k + 1 < r.curve.size(); ++k)
+        for (std::size_t j = 0; j + 1 < ridge.line.size(); ++j) {
+          // The nearest points of two segments: one of the four ends is in every pair.
+          const Vec2 a = r.curve[k].position, b = r.curve[k + 1].position;
+          const Vec2 c = ridge.line[j], d = ridge.line[j + 1];
+          nearest = std::min({nearest, distance(a, geometry::closestPointOnSegment(a, c, d)),
+                              distance(b, geometry::closestPointOnSegment(b, c, d)),
+                              distance(c, geometry::closestPointOnSegment(c, a, b)),
+                              distance(d, geometry::closestPointOnSegment(d, a, b))});
+        }
+      const double reach = nearest - kValleyCrestMargin;
+      if (reach < r.radius)
+        r.radius = std::max(quantize(std::max(reach, 0.0), Quantum::kRadius),
+                            std::min(r.radius, valleyMinReach(r.type, r.widthUp, r.widthDown)));
     }
-    amplitude *= 1.0 - kCrestCalm * clear * smoothstep(1.0 - hit.distance / kCrestCalmReach);
   }
 }
 

@@ -3,7 +3,6 @@
 #include "strahler/base/random.h"
 #include "strahler/geometry/distance.h"
 #include "strahler/network/relief_law.h"
-#include "strahler/primitives/drawn_relief.h"
 #include "strahler/primitives/quantization.h"
 
 #include <algorithm>
@@ -139,12 +138,10 @@ class BlockTerrain {
 public:
   BlockTerrain(const input::WorldSpec& spec, const analysis::Hydrology& h,
                const std::vector<const RiverPrimitive*>& riverOfNode)
-      : spec_(spec), h_(h), riverOfNode_(riverOfNode), relief_(spec, *h.land),
-        drawn_(spec, h, relief_) {}
+      : spec_(spec), h_(h), riverOfNode_(riverOfNode), relief_(spec, *h.land) {}
 
-  /// The primitives of block `id`, and in `bases` (when given) the elevation of the river point
-  /// each rises from.
-  std::vector<TerrainPrimitive> build(network::NodeId id, std::vector<double>* bases) const {
+  /// The primitives of block `id`, and in `bases` (when given) the river point each rises from.
+  std::vector<TerrainPrimitive> build(network::NodeId id, std::vector<TerrainBase>* bases) const {
     const blocks::Block& block = h_.blocks.blocks[id.index()];
     std::vector<TerrainPrimitive> out;
     if (block.region.empty())
@@ -184,7 +181,8 @@ private:
 
   TerrainPrimitive primitiveAt(Vec2 c, network::NodeId id,
                                const std::vector<const RiverPrimitive*>& curves,
-                               const std::vector<Ridge>& ridges, std::vector<double>* bases) const {
+                               const std::vector<Ridge>& ridges,
+                               std::vector<TerrainBase>* bases) const {
     const network::RiverNode& node = h_.network.node(id);
     RiverHit a = nearestRiver(curves, c);
     if (!std::isfinite(a.distance))
@@ -207,17 +205,14 @@ private:
     if (const double steepness = length(slope); steepness > kMaxHillslope)
       slope = slope * (kMaxHillslope / steepness);
     const double relief = std::max(0.0, b.elevation - a.elevation);
-    double amplitude =
+    const double amplitude =
         kAmplitudePerMetreOfRelief * relief * smoothstep(a.distance / (0.6 * kTerrainSpacing));
-    double elevation = cz;
-    if (!drawn_.empty())
-      drawn_.lift(c, a.distance, elevation, slope, amplitude);
     if (bases)
-      bases->push_back(a.elevation);
+      bases->push_back({a.elevation, a.distance});
     TerrainPrimitive t;
     t.center = quantize(c);
     t.radius = quantize(kTerrainRadiusInSpacings * kTerrainSpacing, Quantum::kRadius);
-    t.elevation = quantize(elevation, Quantum::kElevation);
+    t.elevation = quantize(cz, Quantum::kElevation);
     slope = slope * kPlaneShare;
     t.slope = {quantize(slope.x, Quantum::kSlope), quantize(slope.y, Quantum::kSlope)};
     t.amplitude = quantize(amplitude, Quantum::kElevation);
@@ -229,7 +224,6 @@ private:
   const analysis::Hydrology& h_;
   const std::vector<const RiverPrimitive*>& riverOfNode_;
   network::ReliefLaw relief_;
-  DrawnRidges drawn_;
 };
 
 } // namespace
@@ -237,7 +231,7 @@ private:
 std::vector<std::vector<TerrainPrimitive>>
 generateTerrainPrimitives(const input::WorldSpec& spec, const analysis::Hydrology& hydrology,
                           const std::vector<RiverPrimitive>& rivers,
-                          std::vector<std::vector<double>>* bases) {
+                          std::vector<std::vector<TerrainBase>>* bases) {
   std::vector<const RiverPrimitive*> riverOfNode(hydrology.network.nodes.size(), nullptr);
   for (const RiverPrimitive& r : rivers)
     riverOfNode[r.node.index()] = &r;

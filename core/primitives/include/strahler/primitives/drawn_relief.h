@@ -1,9 +1,9 @@
 #pragma once
 
-#include "strahler/analysis/hydrology.h"
 #include "strahler/input/world_spec.h"
-#include "strahler/network/relief_law.h"
+#include "strahler/primitives/river_primitive.h"
 #include "strahler/primitives/terrain_primitive.h"
+#include "strahler/primitives/terrain_primitives.h"
 
 #include <span>
 #include <vector>
@@ -12,41 +12,32 @@ namespace strahler::primitives {
 
 /// Drop of a drawn ridgeline's crest per metre away from the line (its flanks), m/m.
 inline constexpr double kCrestFlank = 0.3;
+/// How far from a drawn ridgeline the crest stands above every primitive, m.
+inline constexpr double kCrestReach = 1500.0;
 /// Distance from a river over which a crest's lift fades in, m: the terrain beside a river
 /// stays at the river's height, so rivers keep below their banks.
-inline constexpr double kCrestRiverClearance = 400.0;
+inline constexpr double kCrestRiverClearance = 150.0;
 
-/// What the artist's drawn ridgelines do to the terrain primitives (docs/architecture.md,
-/// "Vector map: mountains and ridgelines"). Along each ridge a crest height Z(s) is set every
-/// 100 m of its length: its `elevation` when given, else the highest ridge elevation of the
-/// analysis (Voronoi vertices) within 1.5 km, smoothed over ±1 km so the crest is continuous.
-/// A primitive at distance d < W (the ridge's half-width) is raised to the tent Z − kCrestFlank
-/// d, its plane turned down the tent, the lift fading in with the distance to its river and out
-/// towards W.
-class DrawnRidges {
-public:
-  /// Crests of spec.features' ridges over `hydrology`; `law` and both must outlive this.
-  DrawnRidges(const input::WorldSpec& spec, const analysis::Hydrology& hydrology,
-              const network::ReliefLaw& law);
+/// Lifts the terrain primitives along spec.features' drawn ridgelines into continuous crests
+/// (docs/architecture.md, "Vector map: mountains and ridgelines"). Along each ridge a crest
+/// height Z(s) is set every 100 m of its length: the highest e + kCrestFlank d of the primitives
+/// within kCrestReach (e its elevation, d its distance to the line) and the ridge's `elevation`
+/// when given, then a running max and a running mean over ±1 km, which keep Z above each of
+/// those and make it continuous. A primitive at distance d < W (the ridge's half-width,
+/// network::ridgeHalfWidth) is raised towards the tent Z − kCrestFlank d, its plane turned down
+/// the tent, by a share that fades in with the distance to its river (bases: what
+/// generateTerrainPrimitives reports, one per primitive) and out from W/2 to W; its noise
+/// amplitude is lowered within 1 km of the line. Within kCrestReach every primitive then lies
+/// on or below the tent, so a profile across the line peaks on it. A no-op without ridges.
+void liftCrests(const input::WorldSpec& spec, std::vector<TerrainPrimitive>& terrain,
+                std::span<const TerrainBase> bases);
 
-  /// True when no ridge was drawn.
-  bool empty() const noexcept { return crests_.empty(); }
-  /// Raises `elevation` and turns `slope` (the primitive's unquantised plane) at centre c whose
-  /// nearest river point is `riverDistance` away; scales the noise amplitude down on the crest.
-  void lift(geometry::Vec2 c, double riverDistance, double& elevation, geometry::Vec2& slope,
-            double& amplitude) const noexcept;
-  /// Crest height (m) of ridge i at the point of its line nearest to p.
-  double crestAt(std::size_t i, geometry::Vec2 p) const noexcept;
-
-private:
-  struct Crest {
-    std::vector<geometry::Vec2> line;
-    std::vector<double> along;  ///< Arc length at each vertex of `line`, m.
-    std::vector<double> height; ///< Z every kCrestStep of arc length.
-    double halfWidth = 0.0;
-  };
-  std::vector<Crest> crests_;
-};
+/// How far a river's valley stops short of a drawn ridgeline, m.
+inline constexpr double kValleyCrestMargin = 60.0;
+/// Narrows the valleys (radii) of `rivers` that would reach over a drawn ridgeline of spec to
+/// stop kValleyCrestMargin short of it, no narrower than valleyMinReach: the crest is not
+/// carved by the valleys beside it. Run after fitValleyRadii; a no-op without ridges.
+void keepValleysOffCrests(const input::WorldSpec& spec, std::vector<RiverPrimitive>& rivers);
 
 /// Radii (m) of spec.features' mountains (network::mountainRadius), in order.
 std::vector<double> mountainRadii(const input::WorldSpec& spec);
