@@ -1,5 +1,7 @@
 #include "strahler/construction/world_builder.h"
 
+#include "drawn_mountains.h"
+
 #include "strahler/analysis/hydrology.h"
 #include "strahler/primitives/quantization.h"
 #include "strahler/primitives/river_primitives.h"
@@ -59,16 +61,23 @@ base::Result<WorldData> generateWorldData(const input::WorldSpec& spec, std::str
   data.land = quantizeLand(spec.land);
   data.rivers = primitives::generateRiverPrimitives(
       spec.params, hydrology.network, hydrology.analysis, *hydrology.land, spec.features);
-  const auto terrainByBlock = primitives::generateTerrainPrimitives(spec, hydrology, data.rivers);
+  // With drawn features: the river heights the primitives rise from, for the mountains' fit.
+  const bool drawn = !spec.features.empty();
+  std::vector<std::vector<primitives::TerrainBase>> basesByBlock;
+  const auto terrainByBlock = primitives::generateTerrainPrimitives(
+      spec, hydrology, data.rivers, drawn ? &basesByBlock : nullptr);
   if (progress)
     progress("primitives", 0.9);
 
   // Group by block: block i holds its terrain and the river section below node i.
+  std::vector<primitives::TerrainBase> bases;
   std::uint32_t river = 0;
   for (std::uint32_t i = 0; i < hydrology.network.nodes.size(); ++i) {
     BlockPrimitives b;
     b.terrainBegin = static_cast<std::uint32_t>(data.terrain.size());
     data.terrain.insert(data.terrain.end(), terrainByBlock[i].begin(), terrainByBlock[i].end());
+    if (drawn)
+      bases.insert(bases.end(), basesByBlock[i].begin(), basesByBlock[i].end());
     b.terrainEnd = static_cast<std::uint32_t>(data.terrain.size());
     b.riverBegin = river;
     if (hydrology.network.nodes[i].parent.valid())
@@ -76,12 +85,15 @@ base::Result<WorldData> generateWorldData(const input::WorldSpec& spec, std::str
     b.riverEnd = river;
     data.blocks.push_back(b);
   }
-  primitives::fitValleyRadii(data.rivers, data.terrain);
   for (std::size_t i = 0; i < hydrology.network.nodes.size(); ++i) {
     data.flow.push_back(quantize(hydrology.analysis.flow[i], Quantum::kFlow));
     data.riverTypes.push_back(primitives::toRiverType(hydrology.analysis.rosgen[i]));
   }
   data.network = std::move(hydrology.network);
+  if (drawn)
+    detail::fitDrawnMountains(spec, data, bases);
+  else
+    primitives::fitValleyRadii(data.rivers, data.terrain);
   if (progress)
     progress("primitives", 1.0);
   if (timer) {

@@ -140,7 +140,8 @@ public:
                const std::vector<const RiverPrimitive*>& riverOfNode)
       : spec_(spec), h_(h), riverOfNode_(riverOfNode), relief_(spec, *h.land) {}
 
-  std::vector<TerrainPrimitive> build(network::NodeId id) const {
+  /// The primitives of block `id`, and in `bases` (when given) the river point each rises from.
+  std::vector<TerrainPrimitive> build(network::NodeId id, std::vector<TerrainBase>* bases) const {
     const blocks::Block& block = h_.blocks.blocks[id.index()];
     std::vector<TerrainPrimitive> out;
     if (block.region.empty())
@@ -162,7 +163,7 @@ public:
           continue;
         if (!survives(seed, i, j, c))
           continue;
-        out.push_back(primitiveAt(c.position, id, curves, ridges));
+        out.push_back(primitiveAt(c.position, id, curves, ridges, bases));
       }
     return out;
   }
@@ -180,7 +181,8 @@ private:
 
   TerrainPrimitive primitiveAt(Vec2 c, network::NodeId id,
                                const std::vector<const RiverPrimitive*>& curves,
-                               const std::vector<Ridge>& ridges) const {
+                               const std::vector<Ridge>& ridges,
+                               std::vector<TerrainBase>* bases) const {
     const network::RiverNode& node = h_.network.node(id);
     RiverHit a = nearestRiver(curves, c);
     if (!std::isfinite(a.distance))
@@ -205,6 +207,8 @@ private:
     const double relief = std::max(0.0, b.elevation - a.elevation);
     const double amplitude =
         kAmplitudePerMetreOfRelief * relief * smoothstep(a.distance / (0.6 * kTerrainSpacing));
+    if (bases)
+      bases->push_back({a.elevation, a.distance});
     TerrainPrimitive t;
     t.center = quantize(c);
     t.radius = quantize(kTerrainRadiusInSpacings * kTerrainSpacing, Quantum::kRadius);
@@ -226,14 +230,17 @@ private:
 
 std::vector<std::vector<TerrainPrimitive>>
 generateTerrainPrimitives(const input::WorldSpec& spec, const analysis::Hydrology& hydrology,
-                          const std::vector<RiverPrimitive>& rivers) {
+                          const std::vector<RiverPrimitive>& rivers,
+                          std::vector<std::vector<TerrainBase>>* bases) {
   std::vector<const RiverPrimitive*> riverOfNode(hydrology.network.nodes.size(), nullptr);
   for (const RiverPrimitive& r : rivers)
     riverOfNode[r.node.index()] = &r;
   const BlockTerrain terrain(spec, hydrology, riverOfNode);
   std::vector<std::vector<TerrainPrimitive>> out(hydrology.network.nodes.size());
+  if (bases)
+    bases->assign(out.size(), {});
   for (std::uint32_t i = 0; i < out.size(); ++i)
-    out[i] = terrain.build(network::NodeId(i));
+    out[i] = terrain.build(network::NodeId(i), bases ? &(*bases)[i] : nullptr);
   return out;
 }
 

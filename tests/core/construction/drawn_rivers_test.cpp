@@ -81,9 +81,27 @@ TEST(DrawnRiversWorld, TheCarvedChannelFollowsTheDrawnLine) {
   std::size_t samples = 0, notLower = 0;
   double worst = 0.0;
   Vec2 worstAt;
-  for (const network::DrawnCourse& course : courses(world)) {
+  // Where a grown tributary joins a drawn river, the lowest sample across may lie in the
+  // tributary's channel: the junctions (a node on a drawn line whose child is not).
+  const std::vector<network::DrawnCourse> drawnCourses = courses(world);
+  auto onCourse = [&](Vec2 q) {
+    for (const network::DrawnCourse& course : drawnCourses)
+      for (std::size_t k = 1; k < course.line.size(); ++k)
+        if (geometry::pointSegmentDistance(q, course.line[k - 1], course.line[k]) < 1.0)
+          return true;
+    return false;
+  };
+  std::vector<Vec2> junctions;
+  const network::RiverNetwork& network = world.data().network;
+  for (const network::RiverNode& n : network.nodes)
+    if (n.parent.valid() && onCourse(network.node(n.parent).position) && !onCourse(n.position))
+      junctions.push_back(network.node(n.parent).position);
+  for (const network::DrawnCourse& course : drawnCourses) {
     for (double s = 0.0; s < course.arc.back(); s += kZoom14Spacing) {
       const Vec2 p = course.at(s);
+      if (std::any_of(junctions.begin(), junctions.end(),
+                      [&](Vec2 j) { return distance(j, p) < kAcross; }))
+        continue;
       // Near the mouth the sea lies to the sides; near a vertex where the line turns, the
       // samples across on the inside of the bend fall on the line's other leg.
       if (world.land().distanceToBoundary(p, 2.0 * kAcross) < 2.0 * kAcross)
