@@ -127,13 +127,13 @@ private:
     return geometry::pointSegmentDistance(a, c, d) == 0.0 ? a : b;
   }
 
-  /// Adjacent segments of one line meet at their shared point; they overlap only when the
-  /// line turns straight back over itself (to within a nanoradian: projection rounding).
+  /// Adjacent segments of one line meet at their shared point; they (nearly) overlap when the
+  /// line turns back by more than 179° (straight lines of lon/lat bend a little in the frame).
   static bool foldsBack(const Segment& s, const Segment& t) noexcept {
     const Vec2 u = s.b - s.a;
     const Vec2 v = t.b - t.a;
-    return std::abs(geometry::cross(u, v)) <= 1e-9 * geometry::length(u) * geometry::length(v) &&
-           geometry::dot(u, v) < 0.0;
+    const double cosOneDegree = 0.99984769515639124;
+    return geometry::dot(u, v) < -cosOneDegree * geometry::length(u) * geometry::length(v);
   }
 
   base::Status checkCrossings() const {
