@@ -32,9 +32,9 @@ FeatureTolerances featureTolerances(const Params& params) noexcept;
 /// points (kLimitExceeded), a mountain off the land, a river that leaves the land by more than
 /// FeatureTolerances::offLand away from its mouth, a river whose last point is farther than
 /// FeatureTolerances::mouth from the coast and every lake shore ("ends inland without a lake",
-/// or out in the water), a river that crosses itself, another river or a ridge, and two river
-/// mouths closer than params.mouthSpacing (the spacing of automatic mouths). Errors start with
-/// "features: ".
+/// or out in the water), a river that meets (touching counts) itself, another river or a ridge
+/// or turns back by more than 179°, and two river mouths closer than params.mouthSpacing (the
+/// spacing of automatic mouths). Errors start with "features: ".
 base::Result<Features> parseFeatures(std::string_view geoJson,
                                      const geometry::LocalProjection& projection,
                                      const geometry::MultiPolygon& landLocal, const Params& params,
