@@ -82,10 +82,11 @@ const char* generateUsage() noexcept {
 }
 
 int runGenerate(const std::vector<std::string>& rawArgs) {
-  auto parsed = CliArgs::parse("generate", rawArgs,
-                               {"--coast", "--params", "--mouths", "--features", "--seed", "--cache-dir", "-o",
-                                "--image", "--image-size", kMaxAreaOption, kMaxExtentOption},
-                               {"--json", "--quiet", "--repair", "--help", "-h"});
+  auto parsed =
+      CliArgs::parse("generate", rawArgs,
+                     {"--coast", "--params", "--mouths", "--features", "--seed", "--cache-dir",
+                      "-o", "--image", "--image-size", kMaxAreaOption, kMaxExtentOption},
+                     {"--json", "--quiet", "--repair", "--help", "-h"});
   if (!parsed)
     return usageError(parsed.error(), generateUsage());
   const CliArgs& args = parsed.value();

@@ -110,8 +110,8 @@ loadWorlds(const CliArgs& args) {
 
 int runServe(const std::vector<std::string>& raw) {
   auto parsed = CliArgs::parse("serve", raw,
-                               {"--coast", "--params", "--features", "--seed", "--host", "--port", "--threads",
-                                "--workers", "--cache-mb", "--cache-dir", "--web-root",
+                               {"--coast", "--params", "--features", "--seed", "--host", "--port",
+                                "--threads", "--workers", "--cache-mb", "--cache-dir", "--web-root",
                                 "--public-url", "--trusted-proxies", "--max-client-connections",
                                 kMaxAreaOption, kMaxExtentOption},
                                {"--quiet", "--repair", "--help", "-h"});

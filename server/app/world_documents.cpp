@@ -74,8 +74,9 @@ std::string featuresGeoJson(const input::Features& features) {
     return out;
   };
   const auto feature = [&](json properties, json geometry) {
-    list.push_back(
-        {{"type", "Feature"}, {"properties", std::move(properties)}, {"geometry", std::move(geometry)}});
+    list.push_back({{"type", "Feature"},
+                    {"properties", std::move(properties)},
+                    {"geometry", std::move(geometry)}});
   };
   for (const input::MountainFeature& m : features.mountains) {
     json properties = {{"kind", "mountain"}};
@@ -83,8 +84,7 @@ std::string featuresGeoJson(const input::Features& features) {
       properties["elevation"] = *m.elevation;
     if (m.radius)
       properties["radius"] = *m.radius;
-    feature(std::move(properties),
-            {{"type", "Point"}, {"coordinates", {m.lonLat.x, m.lonLat.y}}});
+    feature(std::move(properties), {{"type", "Point"}, {"coordinates", {m.lonLat.x, m.lonLat.y}}});
   }
   for (const input::RidgeFeature& r : features.ridges) {
     json properties = {{"kind", "ridge"}};

@@ -61,8 +61,8 @@ TEST(FeaturesEndpoint, ServesTheFeaturesAsDrawn) {
   EXPECT_EQ(doc["type"], "FeatureCollection");
   const json& list = doc["features"];
   ASSERT_EQ(list.size(), 5u);
-  EXPECT_EQ(list[0]["properties"], (json{{"kind", "mountain"}, {"elevation", 2706.0},
-                                         {"radius", 4000.0}}));
+  EXPECT_EQ(list[0]["properties"],
+            (json{{"kind", "mountain"}, {"elevation", 2706.0}, {"radius", 4000.0}}));
   EXPECT_EQ(list[0]["geometry"], (json{{"type", "Point"}, {"coordinates", {8.9456, 42.3797}}}));
   EXPECT_EQ(list[1]["properties"], (json{{"kind", "mountain"}}));
   EXPECT_EQ(list[2]["properties"], (json{{"kind", "ridge"}, {"elevation", 1800.0}}));
@@ -81,7 +81,8 @@ TEST(FeaturesEndpoint, AWorldWithoutFeaturesHasAnEmptyCollection) {
   const auto r = request(s.port(), "/worlds/island/features.geojson");
   ASSERT_EQ(r.status, 200);
   EXPECT_EQ(r.headers.at("content-type"), "application/geo+json");
-  EXPECT_EQ(json::parse(r.body), (json{{"type", "FeatureCollection"}, {"features", json::array()}}));
+  EXPECT_EQ(json::parse(r.body),
+            (json{{"type", "FeatureCollection"}, {"features", json::array()}}));
 }
 
 TEST(FeaturesEndpoint, InvalidUtf8InANameIsReplaced) {

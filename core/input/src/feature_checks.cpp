@@ -39,9 +39,9 @@ public:
     for (std::size_t i = 0; i < features_.mountains.size(); ++i) {
       const MountainFeature& m = features_.mountains[i];
       if (!land_.contains(m.position))
-        return makeError(ErrorCode::kInvalidInput,
-                         "features: " + labels_.mountains[i] + ": the mountain at " +
-                             lonLatText(m.lonLat) + " lies off the land (in the sea or a lake)");
+        return makeError(ErrorCode::kInvalidInput, "features: " + labels_.mountains[i] +
+                                                       ": the mountain at " + lonLatText(m.lonLat) +
+                                                       " lies off the land (in the sea or a lake)");
     }
     for (std::size_t i = 0; i < features_.rivers.size(); ++i)
       STRAHLER_RETURN_IF_ERROR(checkRiverOnLand(i));
@@ -81,8 +81,8 @@ private:
     // on the side of their first point, so only those near the shore are sampled.
     const double half = 0.5 * tolerances_.offLand;
     if (!nearLand(line.front(), half))
-      return riverError(i, "its source (point 0) " + lonLatText(lonLat.front()) +
-                               " is off the land");
+      return riverError(i,
+                        "its source (point 0) " + lonLatText(lonLat.front()) + " is off the land");
     for (std::size_t k = 0; k + 1 < line.size(); ++k) {
       const Vec2 a = line[k];
       const Vec2 b = line[k + 1];
@@ -182,9 +182,8 @@ private:
         const bool same = t.river && t.feature == s.feature;
         if (same && t.k == s.k + 1) {
           if (foldsBack(s, t))
-            return riverError(s.feature, "doubles back on itself at point " +
-                                             std::to_string(t.k) + " " +
-                                             lonLatText(projection_.inverse(t.a)));
+            return riverError(s.feature, "doubles back on itself at point " + std::to_string(t.k) +
+                                             " " + lonLatText(projection_.inverse(t.a)));
           continue;
         }
         if (!geometry::segmentsIntersect(s.a, s.b, t.a, t.b))
@@ -194,10 +193,10 @@ private:
           return riverError(s.feature, "crosses itself at " + at + " (segments " +
                                            std::to_string(s.k) + " and " + std::to_string(t.k) +
                                            ")");
-        return riverError(s.feature, "crosses " + label(t) + " at " + at + " (its segment " +
-                                         std::to_string(s.k) + ")" +
-                                         (t.river ? "; drawn rivers may not meet"
-                                                  : "; no river crosses a drawn ridge"));
+        return riverError(
+            s.feature,
+            "crosses " + label(t) + " at " + at + " (its segment " + std::to_string(s.k) + ")" +
+                (t.river ? "; drawn rivers may not meet" : "; no river crosses a drawn ridge"));
       }
     }
     return base::Ok{};
@@ -225,13 +224,12 @@ private:
       }
     if (worstA == n)
       return base::Ok{};
-    return riverError(worstB, "its mouth " + lonLatText(features_.rivers[worstB].lonLat.back()) +
-                                  " is " +
-                                  kmText(geometry::distance(mouth(worstA), mouth(worstB))) +
-                                  " from the mouth of " + labels_.rivers[worstA] + " at " +
-                                  lonLatText(features_.rivers[worstA].lonLat.back()) +
-                                  "; mouths must be at least mouthSpacing = " +
-                                  kmText(spacing) + " apart");
+    return riverError(worstB,
+                      "its mouth " + lonLatText(features_.rivers[worstB].lonLat.back()) + " is " +
+                          kmText(geometry::distance(mouth(worstA), mouth(worstB))) +
+                          " from the mouth of " + labels_.rivers[worstA] + " at " +
+                          lonLatText(features_.rivers[worstA].lonLat.back()) +
+                          "; mouths must be at least mouthSpacing = " + kmText(spacing) + " apart");
   }
 
   const Features& features_;

@@ -79,9 +79,9 @@ private:
     if (!kind->is_string() || (*kind != "mountain" && *kind != "ridge" && *kind != "river"))
       return makeError(ErrorCode::kInvalidInput,
                        where + ": unknown kind " +
-                           (kind->is_string() ? "\"" + detail::printable(kind->get<std::string>()) +
-                                                    "\""
-                                              : std::string(detail::describeType(*kind))) +
+                           (kind->is_string()
+                                ? "\"" + detail::printable(kind->get<std::string>()) + "\""
+                                : std::string(detail::describeType(*kind))) +
                            "; expected \"mountain\", \"ridge\" or \"river\"");
     const std::string kindName = kind->get<std::string>();
     STRAHLER_RETURN_IF_ERROR(checkPropertyNames(*properties, kindName, where));
@@ -114,9 +114,8 @@ private:
   }
 
   /// An optional number property in (0, max]; `what` names it in messages.
-  static base::Result<std::optional<double>> readPositive(const Json& properties,
-                                                          const char* key, double max,
-                                                          const std::string& where) {
+  static base::Result<std::optional<double>> readPositive(const Json& properties, const char* key,
+                                                          double max, const std::string& where) {
     const auto value = properties.find(key);
     if (value == properties.end() || value->is_null())
       return std::optional<double>();
@@ -127,8 +126,7 @@ private:
     const double v = value->get<double>();
     if (!(std::isfinite(v) && v > 0.0 && v <= max))
       return makeError(ErrorCode::kOutOfRange, where + ": \"" + key + "\" " +
-                                                   detail::formatNumber(v) +
-                                                   " m is outside (0, " +
+                                                   detail::formatNumber(v) + " m is outside (0, " +
                                                    detail::formatNumber(max) + "]");
     return std::optional<double>(v);
   }
@@ -145,7 +143,8 @@ private:
                            " is not a " + expected);
     const auto coords = geometry.find("coordinates");
     if (coords == geometry.end())
-      return makeError(ErrorCode::kInvalidInput, where + ": " + expected + " needs \"coordinates\"");
+      return makeError(ErrorCode::kInvalidInput,
+                       where + ": " + expected + " needs \"coordinates\"");
     return &*coords;
   }
 
@@ -168,9 +167,9 @@ private:
       STRAHLER_ASSIGN_OR_RETURN(const geometry::Vec2 p, readPoint((*coords)[k], point));
       const geometry::Vec2 local = projection_.forward(p);
       if (!line.empty() && local == line.back())
-        return makeError(ErrorCode::kInvalidInput,
-                         point + " at " + detail::lonLatText(p) + " repeats point " +
-                             std::to_string(k - 1) + "; remove it");
+        return makeError(ErrorCode::kInvalidInput, point + " at " + detail::lonLatText(p) +
+                                                       " repeats point " + std::to_string(k - 1) +
+                                                       "; remove it");
       lonLat.push_back(p);
       line.push_back(local);
     }
@@ -208,12 +207,12 @@ private:
     const auto name = properties.find("name");
     if (name != properties.end() && !name->is_null()) {
       if (!name->is_string())
-        return makeError(ErrorCode::kInvalidInput, where + " (river): \"name\" must be a string, got " +
+        return makeError(ErrorCode::kInvalidInput, where +
+                                                       " (river): \"name\" must be a string, got " +
                                                        detail::describeType(*name));
       river.name = name->get<std::string>();
     }
-    where += river.name.empty() ? " (river)"
-                                : " (river \"" + detail::printable(river.name) + "\")";
+    where += river.name.empty() ? " (river)" : " (river \"" + detail::printable(river.name) + "\")";
     STRAHLER_RETURN_IF_ERROR(readLine(geometry, where, river.lonLat, river.line));
     features_.rivers.push_back(std::move(river));
     labels_.rivers.push_back(where.substr(10));
@@ -230,8 +229,8 @@ private:
 
 base::Result<Features> parseUnguarded(std::string_view geoJson,
                                       const geometry::LocalProjection& projection,
-                                      const geometry::MultiPolygon& landLocal,
-                                      const Params& params, const InputLimits& limits) {
+                                      const geometry::MultiPolygon& landLocal, const Params& params,
+                                      const InputLimits& limits) {
   detail::JsonLimits jsonLimits;
   jsonLimits.maxBytes = limits.maxFileBytes;
   jsonLimits.maxDepth = limits.maxJsonDepth;
@@ -240,10 +239,9 @@ base::Result<Features> parseUnguarded(std::string_view geoJson,
       detail::saturatingAdd(detail::saturatingMul(16, limits.maxFeatures),
                             detail::saturatingMul(4, limits.maxFeatureVertices)),
       1u << 12);
-  jsonLimits.valuesNote = "at most " + std::to_string(limits.maxFeatures) +
-                          " features (limit maxFeatures) of " +
-                          std::to_string(limits.maxFeatureVertices) +
-                          " points (limit maxFeatureVertices)";
+  jsonLimits.valuesNote =
+      "at most " + std::to_string(limits.maxFeatures) + " features (limit maxFeatures) of " +
+      std::to_string(limits.maxFeatureVertices) + " points (limit maxFeatureVertices)";
   STRAHLER_ASSIGN_OR_RETURN(const Json root, detail::parseJson(geoJson, "features", jsonLimits));
   FeatureReader reader(projection, limits);
   STRAHLER_RETURN_IF_ERROR(reader.readRoot(root));

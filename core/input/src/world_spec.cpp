@@ -225,8 +225,7 @@ base::Result<WorldSpec> loadWorldSpecUnguarded(const WorldSources& sources,
     STRAHLER_ASSIGN_OR_RETURN(
         const std::string featuresText,
         readTextFile(sources.featuresPath, "features file", limits.maxFileBytes));
-    auto features =
-        parseFeatures(featuresText, spec.projection, spec.land, spec.params, limits);
+    auto features = parseFeatures(featuresText, spec.projection, spec.land, spec.params, limits);
     if (!features.ok())
       return inFile(sources.featuresPath, std::move(features).error());
     spec.features = std::move(features).value();

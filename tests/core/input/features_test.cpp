@@ -19,10 +19,10 @@ using test_support::failsWith;
 /// (lon 10.2..10.3, lat 40.2..40.3).
 const WorldSpec& squareIsland() {
   static const WorldSpec spec = [] {
-    const std::string coast = test_support::collectionJson({test_support::featureJson(
-        test_support::polygonJson({test_support::square(10.0, 40.0, 0.5),
-                                   {{10.2, 40.2}, {10.2, 40.3}, {10.3, 40.3}, {10.3, 40.2},
-                                    {10.2, 40.2}}}))});
+    const std::string coast =
+        test_support::collectionJson({test_support::featureJson(test_support::polygonJson(
+            {test_support::square(10.0, 40.0, 0.5),
+             {{10.2, 40.2}, {10.2, 40.3}, {10.3, 40.3}, {10.3, 40.2}, {10.2, 40.2}}}))});
     auto made = makeWorldSpec("square", coast, Params{});
     EXPECT_TRUE(made.ok());
     return std::move(made).value();
@@ -113,12 +113,11 @@ TEST(Features, RefusesBadStructure) {
                         "features: not valid JSON"));
   EXPECT_TRUE(failsWith(parse({mountain(10.1, 40.1), "3"}), ErrorCode::kInvalidInput,
                         "features: feature 1: not a GeoJSON Feature"));
+  EXPECT_TRUE(failsWith(parse({R"({"type":"Feature","properties":null,"geometry":null})"}),
+                        ErrorCode::kInvalidInput, "feature 0: \"properties\" must be an object"));
   EXPECT_TRUE(
-      failsWith(parse({R"({"type":"Feature","properties":null,"geometry":null})"}),
-                ErrorCode::kInvalidInput, "feature 0: \"properties\" must be an object"));
-  EXPECT_TRUE(failsWith(
-      parse({R"({"type":"Feature","properties":{"kind":"ridge"},"geometry":null})"}),
-      ErrorCode::kInvalidInput, "feature 0 (ridge): missing geometry"));
+      failsWith(parse({R"({"type":"Feature","properties":{"kind":"ridge"},"geometry":null})"}),
+                ErrorCode::kInvalidInput, "feature 0 (ridge): missing geometry"));
 }
 
 TEST(Features, RefusesAnUnknownOrMissingKind) {
@@ -127,10 +126,12 @@ TEST(Features, RefusesAnUnknownOrMissingKind) {
                         "features: feature 1: unknown kind \"volcano\"; expected \"mountain\", "
                         "\"ridge\" or \"river\""));
   EXPECT_TRUE(failsWith(
-      parse({R"({"type":"Feature","properties":{},"geometry":{"type":"Point","coordinates":[10,40]}})"}),
+      parse(
+          {R"({"type":"Feature","properties":{},"geometry":{"type":"Point","coordinates":[10,40]}})"}),
       ErrorCode::kInvalidInput, "feature 0: no \"kind\" property"));
   EXPECT_TRUE(failsWith(
-      parse({R"({"type":"Feature","properties":{"kind":3},"geometry":{"type":"Point","coordinates":[10,40]}})"}),
+      parse(
+          {R"({"type":"Feature","properties":{"kind":3},"geometry":{"type":"Point","coordinates":[10,40]}})"}),
       ErrorCode::kInvalidInput, "feature 0: unknown kind a number"));
 }
 
@@ -161,19 +162,20 @@ TEST(Features, RefusesAWrongGeometryType) {
 
 TEST(Features, RefusesBadNumbers) {
   EXPECT_TRUE(failsWith(
-      parse({R"({"type":"Feature","properties":{"kind":"mountain"},"geometry":{"type":"Point","coordinates":[1e999,40]}})"}),
+      parse(
+          {R"({"type":"Feature","properties":{"kind":"mountain"},"geometry":{"type":"Point","coordinates":[1e999,40]}})"}),
       ErrorCode::kInvalidInput, "features: number 1e999 at byte"));
   EXPECT_TRUE(failsWith(parse({line("river", {{10.1, 40.1}, {200.0, 40.1}})}),
                         ErrorCode::kOutOfRange,
                         "feature 0 (river): point 1: longitude 200 is outside [-180, 180]"));
-  EXPECT_TRUE(failsWith(parse({mountain(10.1, 40.1, R"(,"elevation":-5)")}),
-                        ErrorCode::kOutOfRange,
+  EXPECT_TRUE(failsWith(parse({mountain(10.1, 40.1, R"(,"elevation":-5)")}), ErrorCode::kOutOfRange,
                         "feature 0 (mountain): \"elevation\" -5 m is outside (0, 10000]"));
   EXPECT_TRUE(failsWith(parse({mountain(10.1, 40.1, R"(,"radius":0)")}), ErrorCode::kOutOfRange,
                         "\"radius\" 0 m is outside (0, "));
   EXPECT_TRUE(failsWith(parse({mountain(10.1, 40.1, R"(,"elevation":"high")")}),
-                        ErrorCode::kInvalidInput, "\"elevation\" must be a number (metres), got a "
-                                                  "string"));
+                        ErrorCode::kInvalidInput,
+                        "\"elevation\" must be a number (metres), got a "
+                        "string"));
   EXPECT_TRUE(failsWith(parse({line("river", kEastRiver, R"(,"name":5)")}),
                         ErrorCode::kInvalidInput, "\"name\" must be a string, got a number"));
 }
@@ -187,10 +189,9 @@ TEST(Features, RefusesRepeatedPoints) {
 TEST(Features, RefusesTooManyFeaturesOrPoints) {
   InputLimits limits;
   limits.maxFeatures = 2;
-  EXPECT_TRUE(failsWith(parse({mountain(10.1, 40.1), mountain(10.1, 40.2), mountain(10.1, 40.3)},
-                              limits),
-                        ErrorCode::kLimitExceeded,
-                        "feature 2: more than 2 features (limit maxFeatures)"));
+  EXPECT_TRUE(
+      failsWith(parse({mountain(10.1, 40.1), mountain(10.1, 40.2), mountain(10.1, 40.3)}, limits),
+                ErrorCode::kLimitExceeded, "feature 2: more than 2 features (limit maxFeatures)"));
   limits = InputLimits{};
   limits.maxFeatureVertices = 4;
   EXPECT_TRUE(failsWith(parse({mountain(10.1, 40.1), line("river", kEastRiver),
@@ -235,29 +236,28 @@ TEST(Features, RefusesARiverThatLeavesTheLand) {
                         ErrorCode::kInvalidInput,
                         "feature 0 (river): its source (point 0) (10.60000, 40.25000) is off the "
                         "land"));
-  EXPECT_TRUE(failsWith(
-      parse({line("river", {{10.4, 40.05}, {10.6, 40.1}, {10.45, 40.2}, {10.5, 40.3}})}),
-      ErrorCode::kInvalidInput, "feature 0 (river): leaves the land at (10.50"));
+  EXPECT_TRUE(
+      failsWith(parse({line("river", {{10.4, 40.05}, {10.6, 40.1}, {10.45, 40.2}, {10.5, 40.3}})}),
+                ErrorCode::kInvalidInput, "feature 0 (river): leaves the land at (10.50"));
   // Across the lake.
   EXPECT_TRUE(failsWith(parse({line("river", {{10.1, 40.25}, {10.4, 40.25}, {10.5, 40.25}})}),
-                        ErrorCode::kInvalidInput,
-                        "leaves the land at (10.2"));
+                        ErrorCode::kInvalidInput, "leaves the land at (10.2"));
   // A little over the coast, within 0.25 edge lengths, is allowed.
-  auto grazing = parse({line("river", {{10.4, 40.05}, {10.501, 40.1}, {10.45, 40.2},
-                                       {10.5, 40.3}})});
+  auto grazing =
+      parse({line("river", {{10.4, 40.05}, {10.501, 40.1}, {10.45, 40.2}, {10.5, 40.3}})});
   EXPECT_TRUE(grazing.ok()) << grazing.error().message;
 }
 
 TEST(Features, RefusesARiverThatCrossesItself) {
   EXPECT_TRUE(failsWith(
-      parse({line("river", {{10.1, 40.10}, {10.3, 40.15}, {10.3, 40.10}, {10.15, 40.18},
-                            {10.5, 40.05}})}),
+      parse({line("river",
+                  {{10.1, 40.10}, {10.3, 40.15}, {10.3, 40.10}, {10.15, 40.18}, {10.5, 40.05}})}),
       ErrorCode::kInvalidInput, "feature 0 (river): crosses itself at (10.2"));
-  EXPECT_TRUE(failsWith(parse({line("river", {{10.1, 40.1}, {10.3, 40.1}, {10.2, 40.1},
-                                              {10.5, 40.05}})}),
-                        ErrorCode::kInvalidInput,
-                        "feature 0 (river): doubles back on itself at point 1 (10.30000, "
-                        "40.10000)"));
+  EXPECT_TRUE(
+      failsWith(parse({line("river", {{10.1, 40.1}, {10.3, 40.1}, {10.2, 40.1}, {10.5, 40.05}})}),
+                ErrorCode::kInvalidInput,
+                "feature 0 (river): doubles back on itself at point 1 (10.30000, "
+                "40.10000)"));
 }
 
 TEST(Features, RefusesARiverThatCrossesAnotherRiverOrARidge) {
@@ -291,9 +291,8 @@ TEST(Features, ErrorsFromAFileNameThePath) {
   sources.featuresPath = (dir / "missing.geojson").string();
   EXPECT_TRUE(failsWith(loadWorldSpec(sources), ErrorCode::kNotFound,
                         "features file '" + sources.featuresPath + "': file not found"));
-  sources.featuresPath =
-      test_support::writeFile(dir / "bad.geojson", test_support::collectionJson({mountain(
-                                                       170.0, 0.0)}));
+  sources.featuresPath = test_support::writeFile(
+      dir / "bad.geojson", test_support::collectionJson({mountain(170.0, 0.0)}));
   EXPECT_TRUE(failsWith(loadWorldSpec(sources), ErrorCode::kInvalidInput,
                         sources.featuresPath + ": features: feature 0 (mountain): the mountain"));
 }

@@ -72,8 +72,8 @@ void expectRefused(const std::function<void(v1::Features&)>& damage, const std::
   world.features = someFeatures();
   v1::World message = detail::toProto(world);
   damage(*message.mutable_features());
-  EXPECT_TRUE(failsWith(detail::fromProto(message, "w"), ErrorCode::kCorrupt,
-                        "world file 'w': " + part));
+  EXPECT_TRUE(
+      failsWith(detail::fromProto(message, "w"), ErrorCode::kCorrupt, "world file 'w': " + part));
 }
 
 TEST(WorldFeatures, DamagedFeatureDataIsCorrupt) {
@@ -88,8 +88,9 @@ TEST(WorldFeatures, DamagedFeatureDataIsCorrupt) {
                 "feature mountain 0 elevation is not a finite number > 0");
   expectRefused([&](v1::Features& f) { f.mutable_mountains(1)->set_radius(nan); },
                 "feature mountain 1 radius is not a finite number > 0");
-  expectRefused([](v1::Features& f) { f.mutable_ridges(1)->mutable_line()->mutable_x()->RemoveLast(); },
-                "feature ridge 1 has columns of 2, 2, 1 and 2 values");
+  expectRefused(
+      [](v1::Features& f) { f.mutable_ridges(1)->mutable_line()->mutable_x()->RemoveLast(); },
+      "feature ridge 1 has columns of 2, 2, 1 and 2 values");
   expectRefused([](v1::Features& f) { f.mutable_rivers(1)->clear_line(); },
                 "feature river 1 has columns of 0, 0, 0 and 0 values");
   expectRefused([&](v1::Features& f) { f.mutable_rivers(0)->mutable_line()->set_lat(2, nan); },
@@ -153,7 +154,9 @@ TEST(CacheKeyFeatures, SameFeaturesSameKeyAnyChangeAnotherKey) {
       [](input::Features& f) { f.mountains[0].elevation.reset(); },
       [](input::Features& f) { f.mountains[1].radius = 4500.5; },
       [](input::Features& f) { f.ridges[0].elevation.reset(); },
-      [](input::Features& f) { f.ridges[1].lonLat.push_back({9.2, 41.86}); },
+      [](input::Features& f) {
+        f.ridges[1].lonLat.push_back({9.2, 41.86});
+      },
       [](input::Features& f) { f.rivers[1].name = "Tavignano"; },
       [](input::Features& f) { std::swap(f.rivers[0], f.rivers[1]); },
       [](input::Features& f) { f.mountains.pop_back(); },

@@ -14,7 +14,7 @@ namespace strahler::input {
 /// How far the checks of drawn features let a river stray, from the grammar's edge length e.
 struct FeatureTolerances {
   double offLand = 0.0; ///< A river may pass this far outside the land (0.25 e), m.
-  double mouth = 0.0;  ///< A river's last point lies this near a shore at most (1.5 e), m.
+  double mouth = 0.0;   ///< A river's last point lies this near a shore at most (1.5 e), m.
 };
 
 /// The tolerances parseFeatures applies under `params`.
