@@ -99,6 +99,12 @@ private:
                                  std::to_string(k + 1) + ", away from its mouth)");
       }
     }
+    // The points beyond the mouth zone too: an unsampled segment that starts off the land in the
+    // zone (not checked) and leaves it has such a point at its far end.
+    for (std::size_t k = 1; k + 1 < line.size(); ++k)
+      if (geometry::distance(line[k], mouth) > mouthTolerance && !nearLand(line[k], half))
+        return riverError(i, "leaves the land at point " + std::to_string(k) + " " +
+                                 lonLatText(lonLat[k]));
     return base::Ok{};
   }
 

@@ -242,6 +242,13 @@ TEST(Features, RefusesARiverThatLeavesTheLand) {
   // Across the lake.
   EXPECT_TRUE(failsWith(parse({line("river", {{10.1, 40.25}, {10.4, 40.25}, {10.5, 40.25}})}),
                         ErrorCode::kInvalidInput, "leaves the land at (10.2"));
+  // Out to sea and back through the mouth's zone, the far part away from the shore.
+  EXPECT_TRUE(failsWith(
+      parse(
+          {line("river",
+                {{10.3, 40.24}, {10.51, 40.245}, {10.6, 40.25}, {10.51, 40.255}, {10.5, 40.25}})}),
+      ErrorCode::kInvalidInput,
+      "feature 0 (river): leaves the land at point 2 (10.60000, 40.25000)"));
   // A little over the coast, within 0.25 edge lengths, is allowed.
   auto grazing =
       parse({line("river", {{10.4, 40.05}, {10.501, 40.1}, {10.45, 40.2}, {10.5, 40.3}})});
