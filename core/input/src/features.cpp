@@ -19,6 +19,13 @@ using detail::Json;
 /// Largest elevation a drawn feature may ask for (Everest is 8,849 m), m.
 constexpr double kMaxElevation = 10'000.0;
 
+/// What every message starts with; the labels of FeatureLabels go without it.
+constexpr std::string_view kPrefix = "features: ";
+
+std::string withoutPrefix(const std::string& where) {
+  return where.substr(kPrefix.size());
+}
+
 class FeatureReader {
 public:
   FeatureReader(const geometry::LocalProjection& projection, const InputLimits& limits)
@@ -62,7 +69,7 @@ public:
 
 private:
   base::Status readFeature(const Json& feature, std::size_t index) {
-    std::string where = "features: feature " + std::to_string(index);
+    std::string where = std::string(kPrefix) + "feature " + std::to_string(index);
     if (++featureCount_ > limits_.maxFeatures)
       return makeError(ErrorCode::kLimitExceeded, where + ": more than " +
                                                       std::to_string(limits_.maxFeatures) +
@@ -187,7 +194,7 @@ private:
     STRAHLER_ASSIGN_OR_RETURN(mountain.lonLat, readPoint(*coords, where));
     mountain.position = projection_.forward(mountain.lonLat);
     features_.mountains.push_back(mountain);
-    labels_.mountains.push_back(where.substr(10)); // without "features: "
+    labels_.mountains.push_back(withoutPrefix(where));
     return base::Ok{};
   }
 
@@ -198,7 +205,7 @@ private:
                               readPositive(properties, "elevation", kMaxElevation, where));
     STRAHLER_RETURN_IF_ERROR(readLine(geometry, where, ridge.lonLat, ridge.line));
     features_.ridges.push_back(std::move(ridge));
-    labels_.ridges.push_back(where.substr(10));
+    labels_.ridges.push_back(withoutPrefix(where));
     return base::Ok{};
   }
 
@@ -215,7 +222,7 @@ private:
     where += river.name.empty() ? " (river)" : " (river \"" + detail::printable(river.name) + "\")";
     STRAHLER_RETURN_IF_ERROR(readLine(geometry, where, river.lonLat, river.line));
     features_.rivers.push_back(std::move(river));
-    labels_.rivers.push_back(where.substr(10));
+    labels_.rivers.push_back(withoutPrefix(where));
     return base::Ok{};
   }
 
