@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer harnesses (the fuzz preset: clang, ASan + UBSan) and runs each for SECONDS
 # (default 60): scripts/fuzz.sh [SECONDS] [HARNESS ...]
-# Harnesses: http_request coastline params mouths world_file (default: all, one after another).
+# Harnesses: http_request coastline params mouths features world_file (default: all, one after another).
 # Each starts from the committed seeds (tests/fuzz/corpus/, tests/fuzz/regressions/, test data)
 # plus what earlier runs here found (build/fuzz/corpus/<harness>/, kept between runs). A crash,
 # leak, sanitizer report or timeout leaves its input in build/fuzz/findings/<harness>/ and makes
@@ -12,7 +12,7 @@ seconds="${1:-60}"
 shift || true
 harnesses=("$@")
 if [ ${#harnesses[@]} -eq 0 ]; then
-  harnesses=(http_request coastline params mouths world_file)
+  harnesses=(http_request coastline params mouths features world_file)
 fi
 
 cmake --preset fuzz >/dev/null

@@ -60,6 +60,7 @@ base::Status writeOutputs(const CliArgs& args, const input::WorldSpec& spec,
 const char* generateUsage() noexcept {
   return "usage: strahler generate [--coast FILE.geojson] [--params FILE.json] [--mouths "
          "FILE.geojson]\n"
+         "                         [--features FILE.geojson]\n"
          "                         [--seed N] [--cache-dir DIR] [-o "
          "OUT.world|OUT.geojson|OUT.png]\n"
          "                         [--image OUT.png] [--image-size PX] [--max-area-km2 N]\n"
@@ -73,14 +74,19 @@ const char* generateUsage() noexcept {
          "the size a coastline may have (land area, longest side of its bounding box).\n"
          "--repair mends a coastline's self-intersections, spikes, duplicate points, overlaps\n"
          "and ring orientation instead of refusing it, and lists each change on stderr (kind,\n"
-         "lon/lat, area moved in km²; in the --json summary under \"repairs\").\n";
+         "lon/lat, area moved in km²; in the --json summary under \"repairs\").\n"
+         "--features FILE.geojson: the artist's vector map, GeoJSON Features whose \"kind\" is\n"
+         "\"mountain\" (Point; elevation, radius in m), \"ridge\" (LineString; elevation) or\n"
+         "\"river\" (LineString from source to mouth on a shore; name). Faults (a river off the\n"
+         "land or crossing another, a mountain in the sea, ...) are refused with exit code 1.\n";
 }
 
 int runGenerate(const std::vector<std::string>& rawArgs) {
-  auto parsed = CliArgs::parse("generate", rawArgs,
-                               {"--coast", "--params", "--mouths", "--seed", "--cache-dir", "-o",
-                                "--image", "--image-size", kMaxAreaOption, kMaxExtentOption},
-                               {"--json", "--quiet", "--repair", "--help", "-h"});
+  auto parsed =
+      CliArgs::parse("generate", rawArgs,
+                     {"--coast", "--params", "--mouths", "--features", "--seed", "--cache-dir",
+                      "-o", "--image", "--image-size", kMaxAreaOption, kMaxExtentOption},
+                     {"--json", "--quiet", "--repair", "--help", "-h"});
   if (!parsed)
     return usageError(parsed.error(), generateUsage());
   const CliArgs& args = parsed.value();
@@ -101,6 +107,7 @@ int runGenerate(const std::vector<std::string>& rawArgs) {
   sources.coastPath = args.get("--coast").value_or("");
   sources.paramsPath = args.get("--params").value_or("");
   sources.mouthsPath = args.get("--mouths").value_or("");
+  sources.featuresPath = args.get("--features").value_or("");
   sources.seed = seed.value();
   sources.repair = args.has("--repair");
 

@@ -24,6 +24,8 @@ Route routeOf(const std::vector<std::string>& s) {
     route.endpoint = Endpoint::kTileJson;
   else if (s.size() == 3 && s[2] == "rivers.geojson")
     route.endpoint = Endpoint::kRivers;
+  else if (s.size() == 3 && s[2] == "features.geojson")
+    route.endpoint = Endpoint::kFeatures;
   else if (s.size() == 6 && (s[2] == "tiles" || s[2] == "local"))
     route.endpoint = Endpoint::kTile;
   else if (s.size() == 4 && s[2] == "cesium" && s[3] == "layer.json")

@@ -16,6 +16,7 @@ enum class Endpoint {
   kWorld,          ///< /worlds/{id}: its metadata.
   kTileJson,       ///< /worlds/{id}/tilejson.json.
   kRivers,         ///< /worlds/{id}/rivers.geojson.
+  kFeatures,       ///< /worlds/{id}/features.geojson: the artist's vector map as drawn.
   kTile,           ///< /worlds/{id}/{tiles|local}/{z}/{x}/{y}.{format} (parseTileRoute).
   kCesiumLayer,    ///< /worlds/{id}/cesium/layer.json.
   kCesiumTerrain,  ///< /worlds/{id}/cesium/{z}/{x}/{y}.terrain (parseCesiumTerrainRoute).

@@ -30,7 +30,8 @@ constexpr std::chrono::milliseconds kDrainWindow{4000};
 
 constexpr const char* kServeUsage =
     "usage: strahler serve [WORLD.world ...] [--coast FILE.geojson [--params FILE.json] [--seed "
-    "N]]\n"
+    "N]\n"
+    "                      [--features FILE.geojson]]\n"
     "                      [--host 127.0.0.1] [--port 8080] [--threads N] [--workers N]\n"
     "                      [--cache-mb M] [--cache-dir DIR] [--web-root DIR] [--public-url URL]\n"
     "                      [--trusted-proxies LIST]\n"
@@ -48,6 +49,8 @@ constexpr const char* kServeUsage =
     "comma-separated: loopback, none, addresses and CIDR networks (e.g. 172.16.0.0/12).\n"
     "--max-area-km2 N, --max-extent-km N: the size a --coast may have (as `strahler generate`).\n"
     "--repair: mend the --coast's topology defects and list each change (as `strahler generate`).\n"
+    "--features FILE.geojson: the artist's vector map of mountains, ridges and rivers drawn on\n"
+    "the --coast (as `strahler generate`); /worlds/{id}/features.geojson serves it back.\n"
     "--max-client-connections N (default 64) caps the connections of one client address (IPv6:\n"
     "one /64) among the 1,024 the server holds; at a cap the oldest idle or header-incomplete\n"
     "connection is closed to make room, else the new one gets 503. 0: no per-client cap (behind\n"
@@ -78,7 +81,7 @@ loadWorlds(const CliArgs& args) {
     worlds.emplace_back(worldId(std::filesystem::path(path).stem().string(), taken),
                         std::move(data));
   }
-  if (!worlds.empty() && !args.get("--coast"))
+  if (!worlds.empty() && !args.get("--coast") && !args.get("--features"))
     return worlds;
   auto seed = args.getU64("--seed");
   if (!seed)
@@ -86,6 +89,7 @@ loadWorlds(const CliArgs& args) {
   input::WorldSources sources;
   sources.coastPath = args.get("--coast").value_or("");
   sources.paramsPath = args.get("--params").value_or("");
+  sources.featuresPath = args.get("--features").value_or("");
   sources.seed = seed.value();
   sources.repair = args.has("--repair");
   STRAHLER_ASSIGN_OR_RETURN(const input::InputLimits limits, worldLimits(args));
@@ -106,8 +110,8 @@ loadWorlds(const CliArgs& args) {
 
 int runServe(const std::vector<std::string>& raw) {
   auto parsed = CliArgs::parse("serve", raw,
-                               {"--coast", "--params", "--seed", "--host", "--port", "--threads",
-                                "--workers", "--cache-mb", "--cache-dir", "--web-root",
+                               {"--coast", "--params", "--features", "--seed", "--host", "--port",
+                                "--threads", "--workers", "--cache-mb", "--cache-dir", "--web-root",
                                 "--public-url", "--trusted-proxies", "--max-client-connections",
                                 kMaxAreaOption, kMaxExtentOption},
                                {"--quiet", "--repair", "--help", "-h"});

@@ -36,6 +36,7 @@ struct TileServer::ServedWorld {
   std::unique_ptr<TileService> tiles;
   std::string metadata;    ///< worldMetadataJson().
   std::string cesiumLayer; ///< Its Cesium terrain's layer.json.
+  std::string features;    ///< featuresGeoJson(): the artist's vector map.
   /// rivers.geojson, being written from the start (writeRiversAsync). Declared after `tiles`,
   /// whose world it reads.
   std::shared_future<RiversText> rivers;
@@ -58,6 +59,7 @@ TileServer::TileServer(std::vector<std::pair<std::string, construction::WorldDat
     w->center = served.projectionCenter;
     w->metadata = worldMetadataJson(id, served, w->tiles->scheme(tiling::SchemeKind::kLocal));
     w->rivers = writeRiversAsync(served);
+    w->features = featuresGeoJson(served.features);
     w->cesiumLayer =
         CesiumAvailability(w->bounds, w->tiles->scheme(tiling::SchemeKind::kGeographic).maxZoom())
             .layerJson(id);
@@ -162,6 +164,13 @@ void TileServer::handleWorld(const ServedWorld& w, Endpoint endpoint, const Pars
   case Endpoint::kRivers:
     return answerRivers(w.rivers, acceptsGzip(request.header("accept-encoding")), pool_,
                         std::move(done));
+  case Endpoint::kFeatures: {
+    http::Response r;
+    r.headers = {{"Content-Type", "application/geo+json"}, {"Cache-Control", "no-cache"}};
+    r.body = w.features;
+    r.route = "features";
+    return done(std::move(r));
+  }
   case Endpoint::kTile: {
     auto parsed = parseTileRoute(w.id, target.segments, target.query);
     if (!parsed)

@@ -65,6 +65,43 @@ std::string tileJson(const std::string& id, const std::string& base, const LonLa
   return tj.dump();
 }
 
+std::string featuresGeoJson(const input::Features& features) {
+  json list = json::array();
+  const auto positions = [](const std::vector<geometry::Vec2>& points) {
+    json out = json::array();
+    for (const geometry::Vec2 p : points)
+      out.push_back({p.x, p.y});
+    return out;
+  };
+  const auto feature = [&](json properties, json geometry) {
+    list.push_back({{"type", "Feature"},
+                    {"properties", std::move(properties)},
+                    {"geometry", std::move(geometry)}});
+  };
+  for (const input::MountainFeature& m : features.mountains) {
+    json properties = {{"kind", "mountain"}};
+    if (m.elevation)
+      properties["elevation"] = *m.elevation;
+    if (m.radius)
+      properties["radius"] = *m.radius;
+    feature(std::move(properties), {{"type", "Point"}, {"coordinates", {m.lonLat.x, m.lonLat.y}}});
+  }
+  for (const input::RidgeFeature& r : features.ridges) {
+    json properties = {{"kind", "ridge"}};
+    if (r.elevation)
+      properties["elevation"] = *r.elevation;
+    feature(std::move(properties), {{"type", "LineString"}, {"coordinates", positions(r.lonLat)}});
+  }
+  for (const input::RiverFeature& r : features.rivers) {
+    json properties = {{"kind", "river"}};
+    if (!r.name.empty())
+      properties["name"] = r.name;
+    feature(std::move(properties), {{"type", "LineString"}, {"coordinates", positions(r.lonLat)}});
+  }
+  return json{{"type", "FeatureCollection"}, {"features", std::move(list)}}.dump(
+      -1, ' ', false, json::error_handler_t::replace);
+}
+
 std::string healthJson(std::size_t worlds) {
   return json{{"status", "ok"}, {"worlds", worlds}}.dump();
 }

@@ -26,6 +26,12 @@ std::string worldListJson(const std::vector<const std::string*>& metadata);
 std::string tileJson(const std::string& id, const std::string& base, const LonLatBox& bounds,
                      geometry::Vec2 center);
 
+/// The document of GET /worlds/{id}/features.geojson: a GeoJSON FeatureCollection of what was
+/// drawn (lon/lat as drawn; "kind" and the optional elevation, radius and name), in the order
+/// mountains, ridges, rivers; empty when the world has no features. Invalid UTF-8 in a name
+/// becomes U+FFFD.
+std::string featuresGeoJson(const input::Features& features);
+
 /// The document of GET /health.
 std::string healthJson(std::size_t worlds);
 

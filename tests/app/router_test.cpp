@@ -26,6 +26,7 @@ TEST(Router, EachPathShapeNamesItsEndpoint) {
       {S{"worlds", "a"}, Endpoint::kWorld, "a"},
       {S{"worlds", "a", "tilejson.json"}, Endpoint::kTileJson, "a"},
       {S{"worlds", "a", "rivers.geojson"}, Endpoint::kRivers, "a"},
+      {S{"worlds", "a", "features.geojson"}, Endpoint::kFeatures, "a"},
       {S{"worlds", "a", "tiles", "1", "2", "3.png"}, Endpoint::kTile, "a"},
       {S{"worlds", "a", "local", "1", "2", "3.glb"}, Endpoint::kTile, "a"},
       {S{"worlds", "a", "other", "1", "2", "3.png"}, Endpoint::kNoSuchResource, "a"},

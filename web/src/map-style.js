@@ -1,6 +1,7 @@
 // The MapLibre style of one world, built from the server's own resources only (no base map,
 // no glyphs, no sprites), so the viewer works offline.
 import { worldUrl } from './api.js';
+import { FEATURES_SOURCE, featureStyle } from './features-overlay.js';
 
 export const RIVER_LAYER = 'rivers';
 export const TERRAIN_SOURCE = 'terrain-dem';
@@ -40,9 +41,14 @@ function riverWidth(scale) {
   return ['interpolate', ['linear'], ['coalesce', ['get', 'strahler'], 1], 1, 0.4 * scale, 6, 4 * scale];
 }
 
-export function worldStyle(world, exaggeration) {
+/**
+ * The style of `world`; `showFeatures`: draw its artist's vector map (features-overlay.js),
+ * which worlds of a static archive do not have.
+ */
+export function worldStyle(world, exaggeration, showFeatures = false) {
   // A world read from a static archive (pmtiles-source.js) brings its own source, no rivers.
   const dem = world.demSource ?? { type: 'raster-dem', url: worldUrl(world, 'tilejson.json'), tileSize: 256 };
+  const features = world.demSource ? null : featureStyle(world, showFeatures);
   return {
     version: 8,
     // Two sources of the same tiles: MapLibre renders 3D terrain and hillshade better when they
@@ -51,6 +57,7 @@ export function worldStyle(world, exaggeration) {
       [TERRAIN_SOURCE]: { ...dem },
       shade: { ...dem },
       rivers: { type: 'geojson', data: world.riversData ?? worldUrl(world, 'rivers.geojson') },
+      ...(features ? { [FEATURES_SOURCE]: features.source } : {}),
     },
     terrain: { source: TERRAIN_SOURCE, exaggeration },
     layers: [
@@ -85,6 +92,7 @@ export function worldStyle(world, exaggeration) {
         filter: ['==', ['get', 'mouth'], true],
         paint: { 'circle-radius': 3, 'circle-color': '#ffffff', 'circle-stroke-color': '#0b4f9c', 'circle-stroke-width': 1.5 },
       },
+      ...(features ? features.layers : []),
     ],
   };
 }

@@ -4,6 +4,7 @@
 import * as maplibregl from 'maplibre-gl';
 import { loadWorlds, rememberWorld } from './api.js';
 import { ROSGEN_COLOURS, TERRAIN_SOURCE, worldStyle } from './map-style.js';
+import { FeaturesOverlay } from './features-overlay.js';
 import { describePoint } from './point-info.js';
 import { archiveWorlds, pmtilesArchiveUrl } from './pmtiles-source.js';
 import { TileTimings, registerTimedProtocol, showTimings, timedUrl } from './tile-timing.js';
@@ -76,6 +77,8 @@ async function main() {
   map.addControl(new maplibregl.ScaleControl());
   window.strahlerMap = map;
   window.strahlerTimings = timings;
+  const features = new FeaturesOverlay(map, $('show-features'), $('features-note'));
+  window.strahlerFeatures = features;
 
   const currentExaggeration = setupExaggeration(map);
   const showWorld = (world) => {
@@ -83,10 +86,12 @@ async function main() {
     if (!archive) rememberWorld(world);
   };
   showWorld(selected);
+  features.show(selected);
   setupWorldPicker(worlds, selected, (world) => {
-    map.setStyle(worldStyle(world, currentExaggeration()));
+    map.setStyle(worldStyle(world, currentExaggeration(), features.visible));
     map.fitBounds(world.bounds, FIT);
     showWorld(world);
+    features.show(world);
   });
 
   map.on('click', (e) => {

@@ -170,6 +170,46 @@ describe('map viewer', () => {
   });
 });
 
+describe('map viewer with drawn features (serve --features)', { skip: process.env.STRAHLER_TEST_SERVER ? 'needs its own server' : false }, () => {
+  let drawn, page, record;
+
+  before(async () => {
+    const data = join(dirname(fileURLToPath(import.meta.url)), '..', '..', 'tests', 'data');
+    drawn = await startServer(['--coast', join(data, 'corsica.geojson'), '--features', join(data, 'corsica-features.geojson')]);
+    ({ page, record } = await openPage(browser, `${drawn.url}/`));
+    await waitForIdleMap(page);
+  }, { timeout: 2 * STEP_MS });
+
+  after(async () => {
+    await page?.close();
+    await drawn?.stop();
+  });
+
+  test('the "Drawn features" checkbox draws the mountains, the ridge and the rivers', async () => {
+    await page.waitForFunction(() => !document.getElementById('show-features').disabled, null, { timeout: STEP_MS });
+    assert.equal(await page.textContent('#features-note'), '(8)');
+    const hidden = await page.evaluate(() => window.strahlerMap.getLayoutProperty('drawn-rivers', 'visibility'));
+    assert.equal(hidden, 'none');
+    await page.click('#show-features');
+    await waitForIdleMap(page);
+    const state = await page.evaluate(() => {
+      const map = window.strahlerMap;
+      return {
+        visibility: ['drawn-rivers', 'drawn-ridges'].map((id) => map.getLayoutProperty(id, 'visibility')),
+        lines: map.queryRenderedFeatures({ layers: ['drawn-rivers', 'drawn-ridges'] }).length,
+        mountains: document.querySelectorAll('.drawn-mountain').length,
+        names: [...document.querySelectorAll('.drawn-river-name')].map((e) => e.textContent),
+      };
+    });
+    assert.deepEqual(state.visibility, ['visible', 'visible']);
+    assert.ok(state.lines > 0, 'no drawn line is rendered');
+    assert.equal(state.mountains, 5);
+    assert.deepEqual(state.names, ['Golo', 'Tavignano']);
+    await page.screenshot({ path: join(SCREENSHOTS, 'viewer-features.png') });
+    assertNoErrors(record, drawn.url);
+  });
+});
+
 describe('map viewer camera in the URL', () => {
   let page, record;
   after(() => page?.close());

@@ -4,6 +4,7 @@
 #include "mouths.h"
 
 #include "strahler/input/coastline.h"
+#include "strahler/input/feature_parser.h"
 
 #include <algorithm>
 #include <array>
@@ -219,6 +220,15 @@ base::Result<WorldSpec> loadWorldSpecUnguarded(const WorldSources& sources,
     if (!mouths.ok())
       return inFile(sources.mouthsPath, std::move(mouths).error());
     spec.mouths = std::move(mouths).value();
+  }
+  if (!sources.featuresPath.empty()) {
+    STRAHLER_ASSIGN_OR_RETURN(
+        const std::string featuresText,
+        readTextFile(sources.featuresPath, "features file", limits.maxFileBytes));
+    auto features = parseFeatures(featuresText, spec.projection, spec.land, spec.params, limits);
+    if (!features.ok())
+      return inFile(sources.featuresPath, std::move(features).error());
+    spec.features = std::move(features).value();
   }
   return spec;
 }

@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
+#include <optional>
+#include <vector>
 
 namespace strahler::store {
 namespace {
@@ -125,6 +127,53 @@ void appendConstraints(std::string& out, const std::vector<input::ConstraintMap>
   }
 }
 
+void appendPoints(std::string& out, const std::vector<geometry::Vec2>& points) {
+  out.append(std::to_string(points.size()));
+  for (const geometry::Vec2 p : points) {
+    out.push_back(' ');
+    appendNumber(out, p.x);
+    out.push_back(' ');
+    appendNumber(out, p.y);
+  }
+}
+
+void appendOptional(std::string& out, const std::optional<double>& value) {
+  out.push_back(' ');
+  if (value)
+    appendNumber(out, *value);
+  else
+    out.push_back('-');
+}
+
+/// The drawn features, in file order; written only when there are some, so that worlds
+/// without features keep the keys (and ETags) they had before features existed.
+void appendFeatures(std::string& out, const input::Features& features) {
+  if (features.empty())
+    return;
+  out.append("features ").append(std::to_string(features.mountains.size()));
+  out.append(" ").append(std::to_string(features.ridges.size()));
+  out.append(" ").append(std::to_string(features.rivers.size())).append("\n");
+  for (const input::MountainFeature& m : features.mountains) {
+    out.append("mountain ");
+    appendPoints(out, {m.lonLat});
+    appendOptional(out, m.elevation);
+    appendOptional(out, m.radius);
+    out.push_back('\n');
+  }
+  for (const input::RidgeFeature& r : features.ridges) {
+    out.append("ridge ");
+    appendPoints(out, r.lonLat);
+    appendOptional(out, r.elevation);
+    out.push_back('\n');
+  }
+  for (const input::RiverFeature& r : features.rivers) {
+    out.append("river ");
+    appendPoints(out, r.lonLat);
+    out.push_back('\n');
+    appendText(out, "name", r.name);
+  }
+}
+
 } // namespace
 
 std::string canonicalSpecText(const input::WorldSpec& spec, std::string_view generatorVersion) {
@@ -134,6 +183,7 @@ std::string canonicalSpecText(const input::WorldSpec& spec, std::string_view gen
   appendLand(out, spec.landLonLat);
   appendMouths(out, spec.mouths);
   appendConstraints(out, spec.constraints);
+  appendFeatures(out, spec.features);
   return out;
 }
 

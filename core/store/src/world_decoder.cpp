@@ -3,6 +3,7 @@
 // allocated from it, every index before it is followed, every running sum before it can
 // overflow.
 
+#include "feature_codec.h"
 #include "world_proto.h"
 
 #include "strahler/input/params.h"
@@ -91,6 +92,9 @@ public:
     STRAHLER_RETURN_IF_ERROR(decodeBlocks());
     STRAHLER_RETURN_IF_ERROR(decodeTerrain());
     STRAHLER_RETURN_IF_ERROR(decodeRivers());
+    if (m_.has_features()) {
+      STRAHLER_ASSIGN_OR_RETURN(world_.features, decodeFeatures(m_.features(), name_));
+    }
     return std::move(world_);
   }
 

@@ -1,6 +1,7 @@
 // WorldData -> strahler.v1.World. Everything the reader derives or checks is asserted here,
 // so that a world this encoder accepts always reads back equal.
 
+#include "feature_codec.h"
 #include "world_proto.h"
 
 #include "strahler/input/params.h"
@@ -266,6 +267,8 @@ v1::World toProto(const WorldData& world) {
   encodeBlocks(world, *message.mutable_blocks());
   encodeTerrain(world.terrain, *message.mutable_terrain());
   encodeRivers(world, *message.mutable_rivers());
+  if (!world.features.empty()) // absent otherwise: the same bytes as before features existed
+    encodeFeatures(world.features, *message.mutable_features());
   return message;
 }
 

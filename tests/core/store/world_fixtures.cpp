@@ -249,6 +249,8 @@ WorldData makeLargeWorld(double areaKm2, std::uint64_t seed) {
     return fail("river primitives differ");
   if (a.blocks != b.blocks)
     return fail("blocks differ");
+  if (!(a.features == b.features))
+    return fail("features differ");
   // stageSeconds is not compared: world files do not store timings.
   return ::testing::AssertionSuccess();
 }

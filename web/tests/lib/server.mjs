@@ -19,8 +19,9 @@ export function strahlerBinary() {
 /**
  * Resolves to { url, stop() }. STRAHLER_TEST_SERVER=http://host:port tests a server that is
  * already running instead; STRAHLER_BIN overrides the program (default build/release/bin/strahler).
+ * `extraArgs` go to `strahler serve` (e.g. --coast FILE --features FILE).
  */
-export async function startServer() {
+export async function startServer(extraArgs = []) {
   if (process.env.STRAHLER_TEST_SERVER) {
     return { url: process.env.STRAHLER_TEST_SERVER.replace(/\/$/, ''), stop: async () => {} };
   }
@@ -29,7 +30,7 @@ export async function startServer() {
   if (!existsSync(join(webRoot, 'index.html'))) throw new Error(`${webRoot} is missing: run \`npm run build --prefix web\``);
 
   const child = spawn(binary, ['serve', '--host', '127.0.0.1', '--port', '0', '--quiet',
-    '--cache-dir', join(tmpdir(), 'strahler-web-tests-cache'), '--web-root', webRoot], { stdio: ['ignore', 'pipe', 'pipe'] });
+    '--cache-dir', join(tmpdir(), 'strahler-web-tests-cache'), '--web-root', webRoot, ...extraArgs], { stdio: ['ignore', 'pipe', 'pipe'] });
   const killNow = () => child.kill('SIGKILL');
   process.on('exit', killNow); // even if the test process dies without running after()
   for (const signal of ['SIGINT', 'SIGTERM']) process.once(signal, () => process.exit(1)); // runs killNow

@@ -14,6 +14,8 @@ struct InputLimits {
   double maxAreaKm2 = 250'000.0;               ///< Land area of one world (Great Britain: 209,331).
   double maxExtentKm = 2'000.0;                ///< Largest side of the world's bounding box.
   std::size_t maxMouths = 10'000;              ///< User-given mouths.
+  std::size_t maxFeatures = 10'000;            ///< Drawn features (--features), all kinds.
+  std::size_t maxFeatureVertices = 200'000;    ///< Points of all drawn lines and mountains.
   std::size_t maxConstraintPixels = 64u << 20; ///< Pixels of one constraint image.
 };
 

@@ -53,9 +53,10 @@ struct WorldSpec {
 
 /// Where a world's inputs come from; empty strings mean "not given".
 struct WorldSources {
-  std::string coastPath;  ///< GeoJSON file; empty: the embedded default island.
-  std::string paramsPath; ///< params JSON file; empty: defaults.
-  std::string mouthsPath; ///< GeoJSON Points with a "priority" property; empty: automatic.
+  std::string coastPath;    ///< GeoJSON file; empty: the embedded default island.
+  std::string paramsPath;   ///< params JSON file; empty: defaults.
+  std::string mouthsPath;   ///< GeoJSON Points with a "priority" property; empty: automatic.
+  std::string featuresPath; ///< The artist's vector map (parseFeatures); empty: none.
   std::optional<std::uint64_t> seed; ///< Overrides params' seed when set.
   bool repair = false; ///< Mend the coastline's topology defects instead of refusing them.
 };
@@ -66,8 +67,9 @@ struct WorldSources {
 /// listed in WorldSpec::repairs. Missing files are kNotFound and unreadable ones kIoError, naming
 /// the path; faults inside a file are prefixed with its path. Mouths: a GeoJSON FeatureCollection
 /// (or one Feature) of Point or MultiPoint geometries with an optional integer "priority" property
-/// ≥ 1. The land must measure at most limits.maxExtentKm on each side of its bounding box and
-/// limits.maxAreaKm2 in area (kLimitExceeded, giving both numbers).
+/// ≥ 1. Features: see parseFeatures (feature_parser.h). The land must measure at most
+/// limits.maxExtentKm on each side of its bounding box and limits.maxAreaKm2 in area
+/// (kLimitExceeded, giving both numbers).
 base::Result<WorldSpec> loadWorldSpec(const WorldSources& sources, const InputLimits& limits = {});
 
 /// Builds a spec from in-memory inputs (coastline GeoJSON in degrees, parsed params, which
