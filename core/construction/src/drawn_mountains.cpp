@@ -139,7 +139,9 @@ void fitDrawnMountains(const input::WorldSpec& spec, WorldData& data,
       for (std::size_t k = 0; k < scaled.terrain.size(); ++k) {
         const double g = primitives::mountainGain(features, radii, gains, scaled.terrain[k].center);
         if (g != 1.0)
-          scaled.terrain[k] = primitives::scaleRelief(scaled.terrain[k], nearBases[k].elevation, g);
+          scaled.terrain[k] = primitives::scaleRelief(
+              scaled.terrain[k], nearBases[k].elevation, g,
+              primitives::mountainCap(features, radii, scaled.terrain[k].center));
       }
       primitives::liftCrests(spec, scaled.terrain, nearBases);
       primitives::fitValleyRadii(scaled.rivers, scaled.terrain);
@@ -186,7 +188,9 @@ void fitDrawnMountains(const input::WorldSpec& spec, WorldData& data,
     for (std::size_t i = 0; i < data.terrain.size(); ++i) {
       const double g = primitives::mountainGain(features, radii, gains, data.terrain[i].center);
       if (g != 1.0)
-        data.terrain[i] = primitives::scaleRelief(data.terrain[i], bases[i].elevation, g);
+        data.terrain[i] = primitives::scaleRelief(
+            data.terrain[i], bases[i].elevation, g,
+            primitives::mountainCap(features, radii, data.terrain[i].center));
     }
   }
   primitives::liftCrests(spec, data.terrain, bases);

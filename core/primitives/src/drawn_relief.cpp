@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace strahler::primitives {
 namespace {
@@ -99,13 +100,24 @@ void liftCrests(const input::WorldSpec& spec, std::vector<TerrainPrimitive>& ter
     const auto samples = static_cast<std::size_t>(std::floor(along.back() / kCrestStep)) + 2;
     std::vector<double> raw(samples,
                             ridge.elevation.value_or(-std::numeric_limits<double>::infinity()));
+    // The crest rises above its flanks by kCrestFlank per metre, but no more than kCrestRise
+    // above the highest primitive near it (or to the ridge's own elevation): beside a drawn
+    // summit off the line, the flank rule alone put the crest hundreds of metres above the
+    // summit (Corsica: a 3,263 m peak beside Rotondo's 2,622 m).
+    std::vector<double> highest(samples, -std::numeric_limits<double>::infinity());
     for (const auto& [i, hit] : near)
       if (hit.distance <= kCrestReach) {
         const auto k = std::min(static_cast<std::size_t>(hit.along / kCrestStep), samples - 2);
         const double top = terrain[i].elevation + kCrestFlank * hit.distance;
         raw[k] = std::max(raw[k], top);
         raw[k + 1] = std::max(raw[k + 1], top);
+        highest[k] = std::max(highest[k], terrain[i].elevation);
+        highest[k + 1] = std::max(highest[k + 1], terrain[i].elevation);
       }
+    for (std::size_t k = 0; k < samples; ++k)
+      if (std::isfinite(highest[k]))
+        raw[k] = std::min(raw[k], std::max(highest[k] + kCrestRise,
+                                           ridge.elevation.value_or(highest[k] + kCrestRise)));
     // Samples with nothing near take the nearest sample's height (0 when none has one).
     double last = -std::numeric_limits<double>::infinity();
     for (double& z : raw)
@@ -178,17 +190,41 @@ std::vector<double> mountainRadii(const input::WorldSpec& spec) {
 
 double mountainGain(const input::Features& features, std::span<const double> radii,
                     std::span<const double> gains, Vec2 p) noexcept {
-  double gain = 1.0;
-  for (std::size_t m = 0; m < gains.size(); ++m)
-    gain +=
+  // The strongest raise and the strongest lowering, not their sums: where two mountains'
+  // reaches overlap the relief between them is not raised twice (summed, Corsica's Rotondo
+  // and d'Oro made a 3,232 m peak between them, higher than either was drawn).
+  double raise = 0.0, lower = 0.0;
+  for (std::size_t m = 0; m < gains.size(); ++m) {
+    const double excess =
         (gains[m] - 1.0) * smoothstep(1.0 - distance(p, features.mountains[m].position) / radii[m]);
-  return std::max(gain, 0.0);
+    raise = std::max(raise, excess);
+    lower = std::min(lower, excess);
+  }
+  return std::max(1.0 + raise + lower, 0.0);
 }
 
-TerrainPrimitive scaleRelief(const TerrainPrimitive& t, double base, double gain) noexcept {
+std::optional<double> mountainCap(const input::Features& features, std::span<const double> radii,
+                                  Vec2 p) noexcept {
+  std::optional<double> cap;
+  for (std::size_t m = 0; m < radii.size(); ++m) {
+    const input::MountainFeature& mountain = features.mountains[m];
+    const double d = distance(p, mountain.position);
+    if (mountain.elevation && d < radii[m])
+      cap = std::max(cap.value_or(-std::numeric_limits<double>::infinity()),
+                     *mountain.elevation - kSummitFall * d);
+  }
+  return cap;
+}
+
+TerrainPrimitive scaleRelief(const TerrainPrimitive& t, double base, double gain,
+                             std::optional<double> cap) noexcept {
   TerrainPrimitive out = t;
-  if (t.elevation > base)
-    out.elevation = quantize(base + gain * (t.elevation - base), Quantum::kElevation);
+  if (t.elevation > base) {
+    double e = base + gain * (t.elevation - base);
+    if (cap && e > t.elevation)
+      e = std::max(t.elevation, std::min(e, *cap)); // raised no higher than the summit's cone
+    out.elevation = quantize(e, Quantum::kElevation);
+  }
   Vec2 slope = t.slope * gain;
   if (const double steepness = length(slope); steepness > kMaxPlane)
     slope = slope * (kMaxPlane / steepness);

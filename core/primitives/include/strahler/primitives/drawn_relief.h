@@ -5,6 +5,7 @@
 #include "strahler/primitives/terrain_primitive.h"
 #include "strahler/primitives/terrain_primitives.h"
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -12,6 +13,8 @@ namespace strahler::primitives {
 
 /// Drop of a drawn ridgeline's crest per metre away from the line (its flanks), m/m.
 inline constexpr double kCrestFlank = 0.3;
+/// How far the crest may rise above the highest primitive near it, m.
+inline constexpr double kCrestRise = 60.0;
 /// How far from a drawn ridgeline the crest stands above every primitive, m.
 inline constexpr double kCrestReach = 1500.0;
 /// Distance from a river over which a crest's lift fades in, m: the terrain beside a river
@@ -41,12 +44,23 @@ void keepValleysOffCrests(const input::WorldSpec& spec, std::vector<RiverPrimiti
 
 /// Radii (m) of spec.features' mountains (network::mountainRadius), in order.
 std::vector<double> mountainRadii(const input::WorldSpec& spec);
-/// Gain of the drawn mountains at p: 1 + Σ_m (gains[m] − 1) · smoothstep(1 − d_m / radii[m]),
-/// d_m the distance to mountain m: each scales the relief around it, most at its summit.
+/// Gain of the drawn mountains at p: 1 plus the largest and the most negative of
+/// (gains[m] − 1) · smoothstep(1 − d_m / radii[m]), d_m the distance to mountain m: each scales
+/// the relief around it, most at its summit, and overlapping reaches do not add up.
 double mountainGain(const input::Features& features, std::span<const double> radii,
                     std::span<const double> gains, geometry::Vec2 p) noexcept;
+/// How far a drawn summit's cone falls per metre from it: no primitive within a mountain's
+/// radius is raised above elevation − kSummitFall · d, so the summit stays the highest point.
+inline constexpr double kSummitFall = 0.15;
+/// The highest elevation a primitive at p may be raised to: the largest of elevation −
+/// kSummitFall · d over the drawn mountains with an `elevation` whose radius covers p; none
+/// when no such mountain does.
+std::optional<double> mountainCap(const input::Features& features, std::span<const double> radii,
+                                  geometry::Vec2 p) noexcept;
 /// t with its relief above `base` (the river height it rises from) scaled by `gain` ≥ 0:
-/// elevation base + gain (elevation − base), plane and noise amplitude times gain; quantised.
-TerrainPrimitive scaleRelief(const TerrainPrimitive& t, double base, double gain) noexcept;
+/// elevation base + gain (elevation − base), raised no higher than `cap` (and never lowered by
+/// it), plane and noise amplitude times gain; quantised.
+TerrainPrimitive scaleRelief(const TerrainPrimitive& t, double base, double gain,
+                             std::optional<double> cap = std::nullopt) noexcept;
 
 } // namespace strahler::primitives
