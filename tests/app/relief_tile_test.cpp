@@ -1,8 +1,8 @@
 // Colour-relief tiles (.relief): the heightmap tiles' samples, seamless hillshade across tile
 // edges, and the tile pipeline's HTTP rules (ETag, 304, CORS, sizes) over real sockets.
-#include "test_client.h"
 #include "test_worlds.h"
 #include "tile_server.h"
+#include "tile_server_harness.h"
 #include "tile_service.h"
 
 #include "strahler/construction/world_builder.h"
@@ -23,8 +23,11 @@
 namespace strahler::app {
 namespace {
 
+using test_support::HttpResponse;
+
 construction::WorldData island() {
-  return construction::generateWorldData(test_support::defaultIslandSpec(), "relief").value();
+  return construction::generateWorldData(strahler::test_support::defaultIslandSpec(), "relief")
+      .value();
 }
 
 /// A z12 Web Mercator tile over the island's hills (its east neighbour is hilly too).
@@ -132,25 +135,9 @@ TEST(ReliefTile, NeighboursAreCutsOfOnePictureSoTheirEdgesShadeAlike) {
   EXPECT_LE(columnStep(n - 1), inside);
 }
 
-/// A response with its headers by lower-case name.
-struct HttpResponse {
-  int status = 0; ///< 0 when no response came.
-  std::map<std::string, std::string> headers;
-  std::string body;
-};
-
+/// GET `target` on a fresh connection (the servers' tests' one-request client).
 HttpResponse get(std::uint16_t port, const std::string& target, const std::string& extra = "") {
-  const std::string bytes = "GET " + target +
-                            " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) +
-                            "\r\nConnection: close\r\n" + extra + "\r\n";
-  HttpResponse out;
-  if (const auto r = http::test::fetch(port, bytes, std::chrono::seconds(20))) {
-    out.status = r->status;
-    for (const auto& [name, value] : r->headers)
-      out.headers[name] = value;
-    out.body = r->body;
-  }
-  return out;
+  return test_support::request(port, target, "GET", extra);
 }
 
 TEST(ReliefTile, IsServedLikeEveryOtherTile) {
