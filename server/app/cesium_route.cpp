@@ -13,14 +13,6 @@ base::Error badTerrain(const std::string& why) {
   return base::makeError(base::ErrorCode::kInvalidInput, why);
 }
 
-std::string_view trimmed(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
-    s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t'))
-    s.remove_suffix(1);
-  return s;
-}
-
 std::string lower(std::string_view s) {
   std::string out(s);
   std::transform(out.begin(), out.end(), out.begin(),
@@ -63,17 +55,17 @@ base::Result<unsigned> cesiumExtensionsFromAccept(std::string_view accept) {
     std::string_view range = accept.substr(0, comma);
     accept = comma == std::string_view::npos ? std::string_view{} : accept.substr(comma + 1);
     const std::size_t semicolon = range.find(';');
-    if (lower(trimmed(range.substr(0, semicolon))) != "application/vnd.quantized-mesh")
+    if (lower(trimmedField(range.substr(0, semicolon))) != "application/vnd.quantized-mesh")
       continue;
     range = semicolon == std::string_view::npos ? std::string_view{} : range.substr(semicolon + 1);
     while (!range.empty()) {
       const std::size_t next = range.find(';');
-      const std::string_view parameter = trimmed(range.substr(0, next));
+      const std::string_view parameter = trimmedField(range.substr(0, next));
       range = next == std::string_view::npos ? std::string_view{} : range.substr(next + 1);
       const std::size_t equals = parameter.find('=');
       if (equals != std::string_view::npos &&
-          lower(trimmed(parameter.substr(0, equals))) == "extensions") {
-        std::string_view value = trimmed(parameter.substr(equals + 1));
+          lower(trimmedField(parameter.substr(0, equals))) == "extensions") {
+        std::string_view value = trimmedField(parameter.substr(equals + 1));
         if (value.size() >= 2 && value.front() == '"' && value.back() == '"')
           value = value.substr(1, value.size() - 2);
         return parseCesiumExtensions(value);

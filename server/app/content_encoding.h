@@ -10,4 +10,7 @@ namespace strahler::app {
 /// gzip entry).
 bool acceptsGzip(std::string_view acceptEncoding);
 
+/// `s` without its leading and trailing spaces and tabs (HTTP's optional whitespace).
+std::string_view trimmedField(std::string_view s) noexcept;
+
 } // namespace strahler::app
