@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 
 namespace strahler::construction::detail {
 namespace {
@@ -77,6 +78,21 @@ Around around(const WorldData& data, const std::vector<Vec2>& summits) {
   return out;
 }
 
+/// Each primitive of `terrain` scaled by the mountains' gains above its base (bases[i], one per
+/// primitive), under the summits' cones.
+void scaleAroundMountains(const input::Features& features, std::span<const double> radii,
+                          std::span<const double> gains,
+                          std::span<const primitives::TerrainBase> bases,
+                          std::vector<primitives::TerrainPrimitive>& terrain) {
+  for (std::size_t i = 0; i < terrain.size(); ++i) {
+    const double g = primitives::mountainGain(features, radii, gains, terrain[i].center);
+    if (g != 1.0)
+      terrain[i] =
+          primitives::scaleRelief(terrain[i], bases[i].elevation, g,
+                                  primitives::mountainCap(features, radii, terrain[i].center));
+  }
+}
+
 } // namespace
 
 double highestWithin(const World& world, Vec2 p, double reach, double spacing) {
@@ -136,13 +152,7 @@ void fitDrawnMountains(const input::WorldSpec& spec, WorldData& data,
       nearBases.push_back(bases[i]);
     for (int round = 0; round < kMaxRounds; ++round) {
       WorldData scaled = near.data;
-      for (std::size_t k = 0; k < scaled.terrain.size(); ++k) {
-        const double g = primitives::mountainGain(features, radii, gains, scaled.terrain[k].center);
-        if (g != 1.0)
-          scaled.terrain[k] = primitives::scaleRelief(
-              scaled.terrain[k], nearBases[k].elevation, g,
-              primitives::mountainCap(features, radii, scaled.terrain[k].center));
-      }
+      scaleAroundMountains(features, radii, gains, nearBases, scaled.terrain);
       primitives::liftCrests(spec, scaled.terrain, nearBases);
       primitives::fitValleyRadii(scaled.rivers, scaled.terrain);
       primitives::keepValleysOffCrests(spec, scaled.rivers);
@@ -185,13 +195,7 @@ void fitDrawnMountains(const input::WorldSpec& spec, WorldData& data,
     // Each mountain's best measured gain, on the whole world.
     for (std::size_t m = 0; m < mountains.size(); ++m)
       gains[m] = searches[m].bestGain;
-    for (std::size_t i = 0; i < data.terrain.size(); ++i) {
-      const double g = primitives::mountainGain(features, radii, gains, data.terrain[i].center);
-      if (g != 1.0)
-        data.terrain[i] = primitives::scaleRelief(
-            data.terrain[i], bases[i].elevation, g,
-            primitives::mountainCap(features, radii, data.terrain[i].center));
-    }
+    scaleAroundMountains(features, radii, gains, bases, data.terrain);
   }
   primitives::liftCrests(spec, data.terrain, bases);
   data.rivers = unfitted;

@@ -247,7 +247,7 @@ Folds::Folds(const WorldData& data, const geometry::PolygonIndex& land,
                           TectonicFolds::kMaxAmplitude);
 }
 
-double Folds::strength(Vec2 p) const noexcept {
+Folds::Cell Folds::cellAt(Vec2 p) const noexcept {
   double fx = (p.x - origin_.x) * inverseSpacing_, fy = (p.y - origin_.y) * inverseSpacing_;
   fx = fx > 0.0 ? fx : 0.0; // NaN: 0
   fy = fy > 0.0 ? fy : 0.0;
@@ -255,26 +255,24 @@ double Folds::strength(Vec2 p) const noexcept {
   fy = fy < ny_ - 1 ? fy : ny_ - 1;
   const int i = std::min(static_cast<int>(fx), nx_ - 2),
             j = std::min(static_cast<int>(fy), ny_ - 2);
-  const double tx = fx - i, ty = fy - j;
   const std::size_t n =
       static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
-  const std::size_t up = static_cast<std::size_t>(nx_);
-  return (1.0 - ty) * ((1.0 - tx) * strength_[n] + tx * strength_[n + 1]) +
-         ty * ((1.0 - tx) * strength_[n + up] + tx * strength_[n + up + 1]);
+  const auto up = static_cast<std::size_t>(nx_);
+  return {{n, n + 1, n + up, n + up + 1}, fx - i, fy - j};
+}
+
+double Folds::bilinear(const Cell& c) const noexcept {
+  return (1.0 - c.ty) * ((1.0 - c.tx) * strength_[c.corners[0]] + c.tx * strength_[c.corners[1]]) +
+         c.ty * ((1.0 - c.tx) * strength_[c.corners[2]] + c.tx * strength_[c.corners[3]]);
+}
+
+double Folds::strength(Vec2 p) const noexcept {
+  return bilinear(cellAt(p));
 }
 
 Folds::Frame Folds::frame(Vec2 p) const noexcept {
-  double fx = (p.x - origin_.x) * inverseSpacing_, fy = (p.y - origin_.y) * inverseSpacing_;
-  fx = fx > 0.0 ? fx : 0.0; // NaN: 0
-  fy = fy > 0.0 ? fy : 0.0;
-  fx = fx < nx_ - 1 ? fx : nx_ - 1;
-  fy = fy < ny_ - 1 ? fy : ny_ - 1;
-  const int i = std::min(static_cast<int>(fx), nx_ - 2),
-            j = std::min(static_cast<int>(fy), ny_ - 2);
-  const std::size_t n =
-      static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
-  const std::size_t corners[4] = {n, n + 1, n + static_cast<std::size_t>(nx_),
-                                  n + static_cast<std::size_t>(nx_) + 1};
+  const Cell cell = cellAt(p);
+  const std::size_t(&corners)[4] = cell.corners;
   // Nodes of positive strength around a point are all of one plate (any two nodes of a cell
   // in different plates make every node of the cell a boundary node or the neighbour of one).
   std::size_t folded = 4;
@@ -285,10 +283,8 @@ Folds::Frame Folds::frame(Vec2 p) const noexcept {
     }
   if (folded == 4)
     return {}; // most of the land: one lookup
-  const double tx = fx - i, ty = fy - j;
   Frame f;
-  f.strength = (1.0 - ty) * ((1.0 - tx) * strength_[corners[0]] + tx * strength_[corners[1]]) +
-               ty * ((1.0 - tx) * strength_[corners[2]] + tx * strength_[corners[3]]);
+  f.strength = bilinear(cell);
   const std::uint32_t plate = plate_[folded];
   const Vec2 v = along_[plate];
   f.along = p.x * v.x + p.y * v.y;

@@ -44,6 +44,15 @@ public:
   const noise::LatticeNoise& noise() const noexcept { return noise_; }
 
 private:
+  /// The grid cell holding p: its four nodes (south-west, south-east, north-west, north-east)
+  /// and p's place in it.
+  struct Cell {
+    std::size_t corners[4];
+    double tx, ty;
+  };
+  Cell cellAt(geometry::Vec2 p) const noexcept;
+  /// The strength at the cell's point, bilinear between its nodes.
+  double bilinear(const Cell& cell) const noexcept;
   geometry::Vec2 origin_;
   double spacing_ = 1.0;
   double inverseSpacing_ = 1.0;
