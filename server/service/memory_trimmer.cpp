@@ -5,8 +5,10 @@
 namespace strahler::service {
 
 MemoryTrimmer::MemoryTrimmer(std::chrono::milliseconds period) : period_(period) {
-  if (period_.count() > 0)
-    thread_ = std::thread([this] { run(); });
+  if (period_.count() <= 0)
+    return;
+  mallopt(M_MMAP_THRESHOLD, kMappedAllocationBytes);
+  thread_ = std::thread([this] { run(); });
 }
 
 MemoryTrimmer::~MemoryTrimmer() {

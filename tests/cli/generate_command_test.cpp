@@ -620,9 +620,9 @@ TEST(GenerateCommand, TemporariesOfKilledWritesAreCleanedUp) {
   writeScratch("kill-cache/" + foreign.filename().string(), "x");
 
   // The server cleans its cache directory when it starts.
-  const std::string command = "exec " + std::string(STRAHLER_EXECUTABLE) +
+  const std::string command = "echo $$; exec " + std::string(STRAHLER_EXECUTABLE) +
                               " serve --quiet --port 0 --threads 1 --workers 1 --cache-dir " +
-                              cache.string() + " 2>&1 & echo $!";
+                              cache.string() + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   ASSERT_NE(pipe, nullptr);
   const pid_t server = static_cast<pid_t>(std::stol(readLine(pipe)));
@@ -651,9 +651,9 @@ TEST(GenerateCommand, TemporariesOfKilledWritesAreCleanedUp) {
 
 TEST(ServeCommand, ServesTilesAndStopsCleanlyOnSigterm) {
   // The real program on an ephemeral port; its first stdout line names the address.
-  const std::string command = "STRAHLER_CACHE_DIR=" + (scratchDir() / "cache").string() + " exec " +
-                              std::string(STRAHLER_EXECUTABLE) +
-                              " serve --quiet --port 0 --threads 2 --workers 2 2>&1 & echo $!";
+  const std::string command = "echo $$; STRAHLER_CACHE_DIR=" + (scratchDir() / "cache").string() +
+                              " exec " + std::string(STRAHLER_EXECUTABLE) +
+                              " serve --quiet --port 0 --threads 2 --workers 2 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   ASSERT_NE(pipe, nullptr);
   const pid_t pid = static_cast<pid_t>(std::stol(readLine(pipe)));
@@ -689,7 +689,7 @@ TEST(ServeCommand, ServesTilesAndStopsCleanlyOnSigterm) {
   for (std::string line; !(line = readLine(pipe)).empty() || !std::feof(pipe);)
     rest += line + "\n";
   pclose(pipe);
-  // The server was started by the shell, which exited: poll until the process is gone.
+  // pclose reaped the server (the shell exec'd into it); it must be gone within the bound.
   while (::kill(pid, 0) == 0 && std::chrono::steady_clock::now() - start < std::chrono::seconds(6))
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   EXPECT_NE(::kill(pid, 0), 0) << "server still running 6 s after SIGTERM";

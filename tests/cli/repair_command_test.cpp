@@ -89,10 +89,10 @@ TEST(RepairCommand, ServeCoastTakesRepair) {
   EXPECT_NE(refused.err.find("ring intersects itself"), std::string::npos) << refused.err;
   EXPECT_NE(refused.err.find("run with --repair to mend it"), std::string::npos) << refused.err;
 
-  const std::string command = "STRAHLER_CACHE_DIR=" + (scratchDir() / "cache").string() + " exec " +
-                              std::string(STRAHLER_EXECUTABLE) +
+  const std::string command = "echo $$; STRAHLER_CACHE_DIR=" + (scratchDir() / "cache").string() +
+                              " exec " + std::string(STRAHLER_EXECUTABLE) +
                               " serve --quiet --port 0 --threads 1 --workers 1 --repair --coast " +
-                              coast.string() + " 2>&1 & echo $!";
+                              coast.string() + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   ASSERT_NE(pipe, nullptr);
   const pid_t pid = static_cast<pid_t>(std::stol(readLine(pipe)));

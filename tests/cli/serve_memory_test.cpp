@@ -17,11 +17,11 @@ namespace {
 using strahler::http::test::readLine;
 
 /// Resident memory allowed above the bound: what tile computations leave in the allocator's
-/// arenas (fragmented by the cached tiles between them, so malloc_trim cannot return it all)
-/// and the I/O buffers. Measured growth with 2 workers (docs/performance.md): 4,000 small
-/// tiles +3 MB (before the cache charged capacity: +100 MB); then 24 tiles of 1024² +16..21 MB
-/// with the heap trimmer, +53 MB without.
-constexpr long kRssSlackMb = 32;
+/// arenas (fragmented by the cached tiles between them) and the I/O buffers. Measured growth
+/// with 2 workers (docs/performance.md): 4,000 small tiles +2..3 MB (before the cache charged
+/// capacity: +100 MB); then 24 tiles of 1024² +1 MB with the trimmer and its fixed mmap
+/// threshold, +7..55 MB with the trimmer alone, +53 MB with neither.
+constexpr long kRssSlackMb = 16;
 constexpr long kCacheMb = 4;
 
 /// VmRSS of process `pid` in MB, or -1.
@@ -79,10 +79,10 @@ int requestTiles(std::uint16_t port, int first, int count) {
 
 TEST(ServeCommand, ResidentMemoryStaysWithinTheCacheBound) {
   const std::string scratch = std::string(STRAHLER_BINARY_DIR) + "/cli_test_scratch/memory";
-  const std::string command = "STRAHLER_CACHE_DIR=" + scratch + " exec " +
+  const std::string command = "echo $$; STRAHLER_CACHE_DIR=" + scratch + " exec " +
                               std::string(STRAHLER_EXECUTABLE) +
                               " serve --quiet --port 0 --threads 2 --workers 2 --cache-mb " +
-                              std::to_string(kCacheMb) + " 2>&1 & echo $!";
+                              std::to_string(kCacheMb) + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   ASSERT_NE(pipe, nullptr);
   const pid_t pid = static_cast<pid_t>(std::stol(readLine(pipe)));
