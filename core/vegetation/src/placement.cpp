@@ -18,13 +18,13 @@ enum Lane : std::uint64_t { kOffsetX = 1, kOffsetY, kAcceptance, kAge, kRotation
 /// Largest number of grid cells one species may span (a programmer error past it).
 constexpr std::int64_t kMaxCells = std::int64_t{1} << 26;
 
-std::uint64_t candidateHash(std::uint64_t seed, std::size_t species, std::int64_t cx,
-                            std::int64_t cy, int k) noexcept {
+/// The hash of a cell: (seed, species, cx, cy) chained; a candidate's is mixHash(cell, k).
+std::uint64_t cellHash(std::uint64_t seed, std::size_t species, std::int64_t cx,
+                       std::int64_t cy) noexcept {
   std::uint64_t h = base::mixHash(seed, kSalt);
   h = base::mixHash(h, species);
   h = base::mixHash(h, static_cast<std::uint64_t>(cx));
-  h = base::mixHash(h, static_cast<std::uint64_t>(cy));
-  return base::mixHash(h, static_cast<std::uint64_t>(k));
+  return base::mixHash(h, static_cast<std::uint64_t>(cy));
 }
 
 /// Uniform in [0, 1) from lane `lane` of hash h.
@@ -48,8 +48,9 @@ struct CandidateGrid {
   bool outranks(std::size_t a, std::size_t b) const noexcept {
     return hashes[a] != hashes[b] ? hashes[a] > hashes[b] : a > b;
   }
-  /// Calls fn(q) for every candidate q in the 3 × 3 cells around candidate p's cell.
-  template <class Fn> void forNeighbours(std::size_t p, Fn&& fn) const {
+  /// Calls fn(q) for every candidate q in the 3 × 3 cells around candidate p's cell, until fn
+  /// returns false; false when it did.
+  template <class Fn> bool forNeighbours(std::size_t p, Fn&& fn) const {
     const auto c = static_cast<std::int64_t>(p / kCandidatesPerCell);
     const std::int64_t x = c % nx, y = c / nx;
     for (std::int64_t yy = std::max<std::int64_t>(y - 1, 0); yy <= std::min(y + 1, ny - 1); ++yy)
@@ -57,8 +58,10 @@ struct CandidateGrid {
            ++xx) {
         const auto first = static_cast<std::size_t>((yy * nx + xx) * kCandidatesPerCell);
         for (std::size_t q = first; q < first + kCandidatesPerCell; ++q)
-          fn(q);
+          if (!fn(q))
+            return false;
       }
+    return true;
   }
 };
 
@@ -76,14 +79,16 @@ CandidateGrid makeCandidates(std::uint64_t seed, std::size_t species, const geom
   g.hashes.resize(count);
   std::size_t i = 0;
   for (std::int64_t y = 0; y < g.ny; ++y)
-    for (std::int64_t x = 0; x < g.nx; ++x)
+    for (std::int64_t x = 0; x < g.nx; ++x) {
+      const std::int64_t cx = g.cx0 + x, cy = g.cy0 + y;
+      const std::uint64_t cell = cellHash(seed, species, cx, cy);
       for (int k = 0; k < kCandidatesPerCell; ++k, ++i) {
-        const std::int64_t cx = g.cx0 + x, cy = g.cy0 + y;
-        const std::uint64_t h = candidateHash(seed, species, cx, cy, k);
+        const std::uint64_t h = base::mixHash(cell, static_cast<std::uint64_t>(k));
         g.hashes[i] = h;
         g.points[i] = {(static_cast<double>(cx) + unit(h, kOffsetX)) * g.cell,
                        (static_cast<double>(cy) + unit(h, kOffsetY)) * g.cell};
       }
+    }
   std::vector<float> d(count);
   density.sample(species, g.points, d);
   g.state.resize(count);
@@ -107,10 +112,8 @@ void throwDarts(CandidateGrid& g, int rounds) {
   for (int round = 0; round < rounds && !undecided.empty(); ++round) {
     winners.clear();
     for (std::size_t p : undecided) {
-      bool best = true;
-      g.forNeighbours(p, [&](std::size_t q) {
-        best =
-            best && !(g.state[q] == CandidateGrid::kUndecided && g.outranks(q, p) && close(p, q));
+      const bool best = g.forNeighbours(p, [&](std::size_t q) {
+        return !(g.state[q] == CandidateGrid::kUndecided && g.outranks(q, p) && close(p, q));
       });
       if (best)
         winners.push_back(p);
@@ -121,6 +124,7 @@ void throwDarts(CandidateGrid& g, int rounds) {
       g.forNeighbours(w, [&](std::size_t q) {
         if (g.state[q] == CandidateGrid::kUndecided && close(w, q))
           g.state[q] = CandidateGrid::kDropped;
+        return true;
       });
     std::erase_if(undecided,
                   [&](std::size_t p) { return g.state[p] != CandidateGrid::kUndecided; });
@@ -136,14 +140,13 @@ Footprint Footprint::box(const geometry::Aabb& bounds) {
           }};
 }
 
-double dependencyBorder(const PlacementRules& rules, SpeciesMask mask) noexcept {
-  double spacing = 0.0, radius = 0.0;
+double dependencyBorder(const PlacementRules& rules, SpeciesMask mask,
+                        SpeciesIndex species) noexcept {
+  double radius = 0.0;
   for (std::size_t i = 0; i < kSpecies.size(); ++i)
-    if (mask & (SpeciesMask{1} << i)) {
-      spacing = std::max(spacing, kSpecies[i].spacing);
+    if (mask & (SpeciesMask{1} << i))
       radius = std::max(radius, kSpecies[i].maxRadius);
-    }
-  return 2.0 * rules.dartRounds * spacing + rules.growthSteps * radius;
+  return rules.growthSteps * radius + 2.0 * rules.dartRounds * kSpecies[species].spacing;
 }
 
 bool instanceLess(const Instance& a, const Instance& b) noexcept {
@@ -162,15 +165,16 @@ std::vector<Instance> placeInstances(std::uint64_t seed, const Footprint& footpr
   std::vector<Instance> out;
   if (mask == 0 || footprint.bounds.empty())
     return out;
-  // One spacing more than the border: the cells meeting the grown box hold every candidate
-  // closer than the border to the footprint, with margin for rounding of the box.
-  const double border = dependencyBorder(rules, mask);
   std::vector<Plant> plants;
   std::vector<std::uint64_t> hashes;
   for (std::size_t s = 0; s < kSpecies.size(); ++s) {
     if (!(mask & (SpeciesMask{1} << s)))
       continue;
-    const geometry::Aabb region = footprint.bounds.expanded(border + kSpecies[s].spacing);
+    // One spacing more than the border: the cells meeting the grown box hold every candidate
+    // closer than the border to the footprint, with margin for rounding of the box.
+    const auto index = static_cast<SpeciesIndex>(s);
+    const geometry::Aabb region =
+        footprint.bounds.expanded(dependencyBorder(rules, mask, index) + kSpecies[s].spacing);
     CandidateGrid g = makeCandidates(seed, s, region, density);
     throwDarts(g, rules.dartRounds);
     for (std::size_t i = 0; i < g.state.size(); ++i)

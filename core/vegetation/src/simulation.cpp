@@ -52,15 +52,19 @@ struct PlantGrid {
     return static_cast<std::size_t>(cellY(p.y) * nx + cellX(p.x));
   }
 
-  template <class Fn> void forNeighbours(Vec2 p, Fn&& fn) const {
+  /// Calls fn(i) for every plant i of the 3 × 3 cells around p, until fn returns false; false
+  /// when it did.
+  template <class Fn> bool forNeighbours(Vec2 p, Fn&& fn) const {
     const std::int64_t x = cellX(p.x), y = cellY(p.y);
     for (std::int64_t yy = std::max<std::int64_t>(y - 1, 0); yy <= std::min(y + 1, ny - 1); ++yy)
       for (std::int64_t xx = std::max<std::int64_t>(x - 1, 0); xx <= std::min(x + 1, nx - 1);
            ++xx) {
         const auto c = static_cast<std::size_t>(yy * nx + xx);
         for (std::size_t k = start[c]; k < start[c + 1]; ++k)
-          fn(order[k]);
+          if (!fn(order[k]))
+            return false;
       }
+    return true;
   }
 };
 
@@ -88,15 +92,14 @@ void simulateGrowth(std::vector<Plant>& plants, int steps) {
     // smaller when the smaller stands strictly inside its radius; equal radii both live.
     killed.clear();
     for (std::size_t j = 0; j < plants.size(); ++j) {
-      if (!plants[j].alive)
-        continue;
-      bool dies = false;
-      grid.forNeighbours(plants[j].position, [&](std::size_t i) {
-        dies = dies || (i != j && plants[i].alive && radius[i] > radius[j] &&
-                        geometry::lengthSquared(plants[i].position - plants[j].position) <
-                            radius[i] * radius[i]);
+      if (!plants[j].alive || radius[j] >= reach)
+        continue; // nothing outgrows the largest radius
+      const bool lives = grid.forNeighbours(plants[j].position, [&](std::size_t i) {
+        return !(plants[i].alive && radius[i] > radius[j] &&
+                 geometry::lengthSquared(plants[i].position - plants[j].position) <
+                     radius[i] * radius[i]);
       });
-      if (dies)
+      if (!lives)
         killed.push_back(j);
     }
     for (std::size_t j : killed)

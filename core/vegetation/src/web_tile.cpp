@@ -1,8 +1,11 @@
 #include "strahler/vegetation/web_tile.h"
 
+#include "strahler/base/assert.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace strahler::vegetation {
 namespace {
@@ -51,6 +54,26 @@ Footprint webTileFootprint(const geometry::LocalProjection& projection, const We
             const Vec2 c = tileCoordinates(tile, projection.inverse(p));
             return std::floor(c.x) == 0.0 && std::floor(c.y) == 0.0;
           }};
+}
+
+base::Result<std::vector<Instance>> placeWebTile(std::uint64_t seed,
+                                                 const geometry::LocalProjection& projection,
+                                                 const WebTile& tile, const DensityField& density) {
+  const SpeciesMask mask = visibleSpecies(tile.z);
+  if (mask == 0)
+    return base::makeError(base::ErrorCode::kOutOfRange,
+                           "vegetation: no species is served at zoom " + std::to_string(tile.z));
+  const std::int64_t n = std::int64_t{1} << tile.z;
+  if (tile.x < 0 || tile.x >= n || tile.y < 0 || tile.y >= n)
+    return base::makeError(base::ErrorCode::kOutOfRange,
+                           "vegetation: tile " + std::to_string(tile.x) + "/" +
+                               std::to_string(tile.y) + " is outside zoom " +
+                               std::to_string(tile.z));
+  std::vector<Instance> instances =
+      placeInstances(seed, webTileFootprint(projection, tile), density, mask);
+  STRAHLER_ASSERT(instances.size() <= maxInstancesPerWebTile(tile.z, mask),
+                  "a tile above the packing bound: spacing broken");
+  return instances;
 }
 
 } // namespace strahler::vegetation

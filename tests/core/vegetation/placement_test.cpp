@@ -152,9 +152,11 @@ TEST(VegetationPlacement, SameOutputTwiceAndOnOtherThreads) {
 }
 
 TEST(VegetationPlacement, BorderGrowsWithTheRuleCounts) {
-  EXPECT_DOUBLE_EQ(dependencyBorder({4, 4}, kAllSpecies), 2 * 4 * 4.0 + 4 * 6.0);
-  EXPECT_DOUBLE_EQ(dependencyBorder({4, 4}, 2u), 2 * 4 * 2.0 + 4 * 1.8);
-  EXPECT_DOUBLE_EQ(dependencyBorder({0, 0}, kAllSpecies), 0.0);
+  EXPECT_DOUBLE_EQ(dependencyBorder({4, 4}, kAllSpecies, 0), 4 * 6.0 + 2 * 4 * 4.0);
+  // Bushes among trees: the trees' radius reaches them, their own spacing bounds the darts.
+  EXPECT_DOUBLE_EQ(dependencyBorder({4, 4}, kAllSpecies, 1), 4 * 6.0 + 2 * 4 * 2.0);
+  EXPECT_DOUBLE_EQ(dependencyBorder({4, 4}, 2u, 1), 4 * 1.8 + 2 * 4 * 2.0);
+  EXPECT_DOUBLE_EQ(dependencyBorder({0, 0}, kAllSpecies, 0), 0.0);
 }
 
 } // namespace

@@ -61,5 +61,26 @@ TEST(VegetationWebTile, FourChildrenUnionEqualsTheirParent) {
   EXPECT_LE(whole.size(), maxInstancesPerWebTile(16, kAllSpecies));
 }
 
+TEST(VegetationWebTile, PlaceWebTileServesOnlyVisibleZooms) {
+  const UniformDensity d({0.5f, 0.5f});
+  const WebTile t17 = tileAt({7.5, 46.5}, 17);
+  const auto result = placeWebTile(3, kProjection, t17, d);
+  ASSERT_TRUE(result.ok());
+  EXPECT_TRUE(result.value() ==
+              placeInstances(3, webTileFootprint(kProjection, t17), d, visibleSpecies(17)));
+  // Zoom 16 serves trees only.
+  const auto trees = placeWebTile(3, kProjection, tileAt({7.5, 46.5}, 16), d);
+  ASSERT_TRUE(trees.ok());
+  ASSERT_FALSE(trees.value().empty());
+  for (const Instance& i : trees.value())
+    EXPECT_EQ(i.species, 0);
+  for (const WebTile bad : {tileAt({7.5, 46.5}, 15), tileAt({7.5, 46.5}, kMaxVegetationZoom + 1),
+                            WebTile{17, -1, 0}, WebTile{17, 0, std::int64_t{1} << 17}}) {
+    const auto r = placeWebTile(3, kProjection, bad, d);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().code, base::ErrorCode::kOutOfRange);
+  }
+}
+
 } // namespace
 } // namespace strahler::vegetation

@@ -45,18 +45,21 @@ inline constexpr double kPackingAtFullDensity = 0.53;
 /// Tolerance of kPackingAtFullDensity over a 400 m square (tests).
 inline constexpr double kPackingTolerance = 0.02;
 
-/// Distance, m, beyond which no candidate can change a decision about an individual of a
-/// tile under `rules` for the species of `mask`: 2 · dartRounds · (largest spacing) for the
-/// dart throwing (each round looks one spacing further and a drop one more), plus growthSteps
-/// · (largest maxRadius) for the competition (each step looks one radius further).
-double dependencyBorder(const PlacementRules& rules, SpeciesMask mask) noexcept;
+/// Distance, m, from a tile beyond which no candidate of `species` can change a decision
+/// about an individual of the tile, under `rules` for the species of `mask`: growthSteps ·
+/// (largest maxRadius of mask) for the competition (a plant's fate after step t depends on
+/// the plants closer than the largest radius after step t − 1), plus 2 · dartRounds ·
+/// spacing for that species' dart throwing (each round looks one spacing further for the
+/// acceptance and one more for the drop). A worst-case bound: chains that long are rare.
+double dependencyBorder(const PlacementRules& rules, SpeciesMask mask,
+                        SpeciesIndex species) noexcept;
 
 /// One placed plant, as served.
 struct Instance {
   geometry::Vec2 position;  ///< Local metres (the world's projection frame).
   SpeciesIndex species = 0; ///< Index in kSpecies.
   float radius = 0.0f;      ///< Canopy radius after growth, m.
-  float rotation = 0.0f;    ///< Rendering yaw in [0, 2π), radians, from the hash.
+  float rotation = 0.0f;    ///< Rendering yaw in [0, 2π] (float rounding), radians, hashed.
   float scale = 1.0f;       ///< Rendering size factor in [0.8, 1.2), from the hash.
   std::uint64_t id = 0;     ///< The candidate's hash: stable across tiles and zooms.
 

@@ -1,9 +1,11 @@
 #pragma once
 
+#include "strahler/base/result.h"
 #include "strahler/geometry/projection.h"
 #include "strahler/vegetation/placement.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace strahler::vegetation {
 
@@ -22,5 +24,13 @@ geometry::Vec2 tileCoordinates(const WebTile& tile, geometry::Vec2 lonLat) noexc
 /// the tile whose floor(tileCoordinates · 2^z) it falls in, so the tiles of a zoom partition
 /// the plane and a tile owns exactly the points of its four children.
 Footprint webTileFootprint(const geometry::LocalProjection& projection, const WebTile& tile);
+
+/// The instances of a Web Mercator tile: placeInstances() over webTileFootprint() for the
+/// species visibleSpecies(z) serves, at most maxInstancesPerWebTile(z) of them. kOutOfRange
+/// for a zoom without vegetation (below every species' minZoom or past kMaxVegetationZoom)
+/// and for x or y outside [0, 2^z).
+base::Result<std::vector<Instance>> placeWebTile(std::uint64_t seed,
+                                                 const geometry::LocalProjection& projection,
+                                                 const WebTile& tile, const DensityField& density);
 
 } // namespace strahler::vegetation
