@@ -44,23 +44,17 @@ struct CandidateGrid {
 
   static constexpr std::uint8_t kUndecided = 0, kAccepted = 1, kDropped = 2;
 
-  /// True when candidate a outranks candidate b (the hash, then the global key).
-  bool outranks(std::size_t a, std::size_t b) const noexcept {
-    return hashes[a] != hashes[b] ? hashes[a] > hashes[b] : a > b;
-  }
-  /// Calls fn(q) for every candidate q in the 3 × 3 cells around candidate p's cell, until fn
-  /// returns false; false when it did.
-  template <class Fn> bool forNeighbours(std::size_t p, Fn&& fn) const {
+  /// Calls fn(first, last) for the candidates [first, last) of each row of the 3 × 3 cells
+  /// around candidate p's cell (a row's candidates are contiguous), until fn returns false;
+  /// false when it did.
+  template <class Fn> bool forNeighbourRows(std::size_t p, Fn&& fn) const {
     const auto c = static_cast<std::int64_t>(p / kCandidatesPerCell);
     const std::int64_t x = c % nx, y = c / nx;
+    const std::int64_t x0 = std::max<std::int64_t>(x - 1, 0), x1 = std::min(x + 1, nx - 1);
     for (std::int64_t yy = std::max<std::int64_t>(y - 1, 0); yy <= std::min(y + 1, ny - 1); ++yy)
-      for (std::int64_t xx = std::max<std::int64_t>(x - 1, 0); xx <= std::min(x + 1, nx - 1);
-           ++xx) {
-        const auto first = static_cast<std::size_t>((yy * nx + xx) * kCandidatesPerCell);
-        for (std::size_t q = first; q < first + kCandidatesPerCell; ++q)
-          if (!fn(q))
-            return false;
-      }
+      if (!fn(static_cast<std::size_t>((yy * nx + x0) * kCandidatesPerCell),
+              static_cast<std::size_t>((yy * nx + x1 + 1) * kCandidatesPerCell)))
+        return false;
     return true;
   }
 };
@@ -106,24 +100,34 @@ void throwDarts(CandidateGrid& g, int rounds) {
   for (std::size_t i = 0; i < g.state.size(); ++i)
     if (g.state[i] == CandidateGrid::kUndecided)
       undecided.push_back(i);
-  auto close = [&](std::size_t a, std::size_t b) {
-    return a != b && geometry::lengthSquared(g.points[a] - g.points[b]) < s2;
-  };
   for (int round = 0; round < rounds && !undecided.empty(); ++round) {
     winners.clear();
     for (std::size_t p : undecided) {
-      const bool best = g.forNeighbours(p, [&](std::size_t q) {
-        return !(g.state[q] == CandidateGrid::kUndecided && g.outranks(q, p) && close(p, q));
+      // p loses to an undecided q closer than the spacing that outranks it (the hash, then
+      // the index, which follows the global key). Branch-free rows: the tests are coin flips.
+      const std::uint64_t hp = g.hashes[p];
+      const Vec2 pp = g.points[p];
+      const bool best = g.forNeighbourRows(p, [&](std::size_t first, std::size_t last) {
+        bool beaten = false;
+        for (std::size_t q = first; q < last; ++q) {
+          const std::uint64_t hq = g.hashes[q];
+          const bool outranks = (hq > hp) | ((hq == hp) & (q > p));
+          beaten |= (g.state[q] == CandidateGrid::kUndecided) & outranks &
+                    (geometry::lengthSquared(g.points[q] - pp) < s2);
+        }
+        return !beaten;
       });
       if (best)
         winners.push_back(p);
     }
     for (std::size_t w : winners)
       g.state[w] = CandidateGrid::kAccepted;
-    for (std::size_t w : winners)
-      g.forNeighbours(w, [&](std::size_t q) {
-        if (g.state[q] == CandidateGrid::kUndecided && close(w, q))
-          g.state[q] = CandidateGrid::kDropped;
+    for (std::size_t w : winners) // w itself is accepted now, so it is not dropped
+      g.forNeighbourRows(w, [&](std::size_t first, std::size_t last) {
+        for (std::size_t q = first; q < last; ++q)
+          if (g.state[q] == CandidateGrid::kUndecided &&
+              geometry::lengthSquared(g.points[q] - g.points[w]) < s2)
+            g.state[q] = CandidateGrid::kDropped;
         return true;
       });
     std::erase_if(undecided,

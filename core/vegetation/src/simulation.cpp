@@ -52,18 +52,16 @@ struct PlantGrid {
     return static_cast<std::size_t>(cellY(p.y) * nx + cellX(p.x));
   }
 
-  /// Calls fn(i) for every plant i of the 3 × 3 cells around p, until fn returns false; false
-  /// when it did.
-  template <class Fn> bool forNeighbours(Vec2 p, Fn&& fn) const {
+  /// Calls fn(first, last) for the slots [first, last) of order of each row of the 3 × 3 cells
+  /// around p (a row's cells are contiguous in order), until fn returns false; false when it
+  /// did.
+  template <class Fn> bool forNeighbourRows(Vec2 p, Fn&& fn) const {
     const std::int64_t x = cellX(p.x), y = cellY(p.y);
+    const std::int64_t x0 = std::max<std::int64_t>(x - 1, 0), x1 = std::min(x + 1, nx - 1);
     for (std::int64_t yy = std::max<std::int64_t>(y - 1, 0); yy <= std::min(y + 1, ny - 1); ++yy)
-      for (std::int64_t xx = std::max<std::int64_t>(x - 1, 0); xx <= std::min(x + 1, nx - 1);
-           ++xx) {
-        const auto c = static_cast<std::size_t>(yy * nx + xx);
-        for (std::size_t k = start[c]; k < start[c + 1]; ++k)
-          if (!fn(order[k]))
-            return false;
-      }
+      if (!fn(start[static_cast<std::size_t>(yy * nx + x0)],
+              start[static_cast<std::size_t>(yy * nx + x1 + 1)]))
+        return false;
     return true;
   }
 };
@@ -77,34 +75,48 @@ void simulateGrowth(std::vector<Plant>& plants, int steps) {
   for (const Plant& p : plants)
     reach = std::max(reach, kSpecies[p.species].maxRadius);
   const PlantGrid grid(plants, reach);
-  std::vector<double> radius(plants.size());
+  // The plants' state in grid order (slot k is plants[order[k]]), for contiguous scans.
+  const std::size_t n = plants.size();
+  std::vector<Vec2> position(n);
+  std::vector<double> radius(n, 0.0);
+  std::vector<std::uint8_t> alive(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    position[k] = plants[grid.order[k]].position;
+    alive[k] = plants[grid.order[k]].alive;
+  }
   std::vector<std::size_t> killed;
   for (int step = 0; step < steps; ++step) {
-    for (std::size_t i = 0; i < plants.size(); ++i) {
-      Plant& p = plants[i];
-      if (!p.alive)
+    for (std::size_t k = 0; k < n; ++k) {
+      Plant& p = plants[grid.order[k]];
+      if (!alive[k])
         continue;
       ++p.age;
-      radius[i] = kSpecies[p.species].radiusAt(p.age);
-      p.alive = p.age <= kSpecies[p.species].maxAge;
+      radius[k] = kSpecies[p.species].radiusAt(p.age);
+      alive[k] = p.age <= kSpecies[p.species].maxAge;
     }
     // The seed's competition (004, 2.3.2), all at once: the larger of two plants kills the
     // smaller when the smaller stands strictly inside its radius; equal radii both live.
     killed.clear();
-    for (std::size_t j = 0; j < plants.size(); ++j) {
-      if (!plants[j].alive || radius[j] >= reach)
+    for (std::size_t j = 0; j < n; ++j) {
+      if (!alive[j] || radius[j] >= reach)
         continue; // nothing outgrows the largest radius
-      const bool lives = grid.forNeighbours(plants[j].position, [&](std::size_t i) {
-        return !(plants[i].alive && radius[i] > radius[j] &&
-                 geometry::lengthSquared(plants[i].position - plants[j].position) <
-                     radius[i] * radius[i]);
+      const double rj = radius[j];
+      const Vec2 pj = position[j];
+      const bool lives = grid.forNeighbourRows(pj, [&](std::size_t first, std::size_t last) {
+        bool beaten = false;
+        for (std::size_t k = first; k < last; ++k) // branch-free: the tests are coin flips
+          beaten |= (alive[k] != 0) & (radius[k] > rj) &
+                    (geometry::lengthSquared(position[k] - pj) < radius[k] * radius[k]);
+        return !beaten;
       });
       if (!lives)
         killed.push_back(j);
     }
     for (std::size_t j : killed)
-      plants[j].alive = false;
+      alive[j] = 0;
   }
+  for (std::size_t k = 0; k < n; ++k)
+    plants[grid.order[k]].alive = alive[k] != 0;
 }
 
 } // namespace strahler::vegetation
