@@ -1,0 +1,19 @@
+#pragma once
+
+#include "strahler/geometry/projection.h"
+#include "strahler/vegetation/placement.h"
+#include "strahler/vegetation/web_tile.h"
+
+#include <span>
+#include <string>
+
+namespace strahler::vegetation {
+
+/// The JSON body of GET /worlds/{id}/vegetation/{z}/{x}/{y}.json (docs/architecture.md,
+/// "Vegetation"): the species table, then one object per instance with its tile coordinates,
+/// lon/lat, species, radius, rotation, scale and id. Numbers are written with fixed digits
+/// (locale-independent), so the same instances always give the same bytes.
+std::string writeVegetationJson(const WebTile& tile, const geometry::LocalProjection& projection,
+                                std::span<const Instance> instances);
+
+} // namespace strahler::vegetation

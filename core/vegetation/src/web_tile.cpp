@@ -1,0 +1,79 @@
+#include "strahler/vegetation/web_tile.h"
+
+#include "strahler/base/assert.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace strahler::vegetation {
+namespace {
+
+using geometry::Vec2;
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+/// EPSG:3857 in units of the world: (0, 0) north-west, (1, 1) south-east.
+Vec2 mercatorUnit(Vec2 lonLat) noexcept {
+  const double u = (lonLat.x + 180.0) / 360.0;
+  const double v = (1.0 - std::asinh(std::tan(lonLat.y / kDeg)) / std::numbers::pi) / 2.0;
+  return {u, v};
+}
+
+Vec2 lonLatOf(Vec2 unit) noexcept {
+  return {unit.x * 360.0 - 180.0,
+          std::atan(std::sinh(std::numbers::pi * (1.0 - 2.0 * unit.y))) * kDeg};
+}
+
+} // namespace
+
+Vec2 tileCoordinates(const WebTile& tile, Vec2 lonLat) noexcept {
+  const Vec2 m = mercatorUnit(lonLat);
+  // ldexp scales by 2^z exactly, so a point's tile at zoom z + 1 is a child of its tile at z.
+  return {std::ldexp(m.x, tile.z) - static_cast<double>(tile.x),
+          std::ldexp(m.y, tile.z) - static_cast<double>(tile.y)};
+}
+
+Footprint webTileFootprint(const geometry::LocalProjection& projection, const WebTile& tile) {
+  // The tile's outline through the projection; its edges bend by far less than the margin
+  // between 16 samples each (the curvature radius is thousands of kilometres).
+  constexpr int kEdgeSamples = 16;
+  geometry::Aabb bounds;
+  const double n = std::ldexp(1.0, tile.z);
+  for (int k = 0; k <= kEdgeSamples; ++k) {
+    const double t = static_cast<double>(k) / kEdgeSamples;
+    for (Vec2 f : {Vec2{t, 0.0}, Vec2{t, 1.0}, Vec2{0.0, t}, Vec2{1.0, t}}) {
+      const Vec2 unit{(static_cast<double>(tile.x) + f.x) / n,
+                      (static_cast<double>(tile.y) + f.y) / n};
+      bounds.add(projection.forward(lonLatOf(unit)));
+    }
+  }
+  bounds = bounds.expanded(0.5 + 1e-3 * std::max(bounds.size().x, bounds.size().y));
+  return {bounds, [projection, tile](Vec2 p) {
+            const Vec2 c = tileCoordinates(tile, projection.inverse(p));
+            return std::floor(c.x) == 0.0 && std::floor(c.y) == 0.0;
+          }};
+}
+
+base::Result<std::vector<Instance>> placeWebTile(std::uint64_t seed,
+                                                 const geometry::LocalProjection& projection,
+                                                 const WebTile& tile, const DensityField& density) {
+  const SpeciesMask mask = visibleSpecies(tile.z);
+  if (mask == 0)
+    return base::makeError(base::ErrorCode::kOutOfRange,
+                           "vegetation: no species is served at zoom " + std::to_string(tile.z));
+  const std::int64_t n = std::int64_t{1} << tile.z;
+  if (tile.x < 0 || tile.x >= n || tile.y < 0 || tile.y >= n)
+    return base::makeError(base::ErrorCode::kOutOfRange,
+                           "vegetation: tile " + std::to_string(tile.x) + "/" +
+                               std::to_string(tile.y) + " is outside zoom " +
+                               std::to_string(tile.z));
+  std::vector<Instance> instances =
+      placeInstances(seed, webTileFootprint(projection, tile), density, mask);
+  STRAHLER_ASSERT(instances.size() <= maxInstancesPerWebTile(tile.z, mask),
+                  "a tile above the packing bound: spacing broken");
+  return instances;
+}
+
+} // namespace strahler::vegetation
