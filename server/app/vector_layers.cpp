@@ -64,10 +64,12 @@ private:
   geometry::Aabb box_;
 };
 
-/// The clipped, simplified lines of `line` (tile units) as parts of a feature.
-void appendLines(std::span<const Vec2> line, std::vector<std::vector<Point>>& parts) {
+/// The clipped lines of `line` (tile units), simplified within `tolerance`, as parts of a
+/// feature.
+void appendLines(std::span<const Vec2> line, std::vector<std::vector<Point>>& parts,
+                 double tolerance = kVectorTolerance) {
   for (const auto& piece : vector_tile::clipLine(line, kBox)) {
-    std::vector<Point> points = vector_tile::toTilePoints(piece, kVectorTolerance, false);
+    std::vector<Point> points = vector_tile::toTilePoints(piece, tolerance, false);
     if (points.size() >= 2)
       parts.push_back(std::move(points));
   }
@@ -244,7 +246,9 @@ Layer contoursLayer(std::span<const double> heights, int z) {
     if (c.closed)
       line.push_back(line.front());
     Feature f{GeometryType::kLineString, {}, {}, 0};
-    appendLines(line, f.parts);
+    // Not simplified (only collinear points go): the grid already spaces the points 16 units
+    // apart, and neighbours' lines then cross their shared edge at the same points.
+    appendLines(line, f.parts, 0.0);
     if (f.parts.empty())
       continue;
     const auto elevation = static_cast<std::int64_t>(std::llround(c.elevation));
