@@ -259,33 +259,39 @@ Layer contoursLayer(std::span<const double> heights, int z) {
   return layer;
 }
 
+std::string vectorLayersJson(int minZoom, int maxZoom) {
+  using nlohmann::json;
+  const auto layer = [&](const char* name, json fields, const char* description) {
+    return json{{"id", name},
+                {"fields", std::move(fields)},
+                {"minzoom", minZoom},
+                {"maxzoom", maxZoom},
+                {"description", description}};
+  };
+  return json::array(
+             {layer("water", {{"kind", "String: sea or lake"}}, "the sea and the lakes"),
+              layer("contours",
+                    {{"elevation", "Number: m"}, {"index", "Boolean: every fifth level"}},
+                    "isolines of the terrain above 0 m"),
+              layer("rivers",
+                    {{"order", "Number: Strahler order"},
+                     {"flow", "Number: m3/s at the downstream end"},
+                     {"width", "Number: channel width at the downstream end, m"},
+                     {"rosgen", "String: Rosgen type"}},
+                    "the carved rivers, the orders visible at the zoom"),
+              layer("features",
+                    {{"kind", "String: mountain, ridge or river"},
+                     {"name", "String"},
+                     {"elevation", "Number: m"},
+                     {"radius", "Number: m"}},
+                    "the artist's vector map")})
+      .dump();
+}
+
 std::string vectorTileJson(const std::string& id, const std::string& base, double west,
                            double south, double east, double north, Vec2 center) {
   using nlohmann::json;
-  const auto layer = [](const char* name, json fields, const char* description) {
-    return json{{"id", name},
-                {"fields", std::move(fields)},
-                {"minzoom", 0},
-                {"maxzoom", tiling::TileScheme::kMaxWebZoom},
-                {"description", description}};
-  };
-  const json layers = json::array(
-      {layer("water", {{"kind", "String: sea or lake"}}, "the sea and the lakes"),
-       layer("contours",
-             {{"elevation", "Number: m"}, {"index", "Boolean: every fifth level"}},
-             "isolines of the terrain above 0 m"),
-       layer("rivers",
-             {{"order", "Number: Strahler order"},
-              {"flow", "Number: m3/s at the downstream end"},
-              {"width", "Number: channel width at the downstream end, m"},
-              {"rosgen", "String: Rosgen type"}},
-             "the carved rivers, the orders visible at the zoom"),
-       layer("features",
-             {{"kind", "String: mountain, ridge or river"},
-              {"name", "String"},
-              {"elevation", "Number: m"},
-              {"radius", "Number: m"}},
-             "the artist's vector map")});
+  const json layers = json::parse(vectorLayersJson(0, tiling::TileScheme::kMaxWebZoom));
   const json tj = {{"tilejson", "3.0.0"},
                    {"name", id},
                    {"description", "strahler vector tiles (Mapbox Vector Tile 2.1)"},

@@ -84,6 +84,10 @@ vector_tile::Layer featuresLayer(const WorldVectors& world, const tiling::TileId
 /// levels above 0 m at contourInterval(z), attributes elevation (m) and index (every fifth).
 vector_tile::Layer contoursLayer(std::span<const double> heights, int z);
 
+/// The TileJSON vector_layers array of the vector tiles (id, fields, minzoom, maxzoom,
+/// description), as JSON text, each layer over zooms `minZoom`..`maxZoom`.
+std::string vectorLayersJson(int minZoom, int maxZoom);
+
 /// The TileJSON 3.0.0 document of world `id`'s vector tiles under the absolute URL `base`
 /// (".../worlds/{id}"), with vector_layers (id, fields, minzoom, maxzoom).
 std::string vectorTileJson(const std::string& id, const std::string& base, double west,
