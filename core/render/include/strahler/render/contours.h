@@ -18,7 +18,7 @@ struct ContourLine {
 std::vector<double> contourLevels(double lo, double hi, double interval);
 
 /// The isolines of `heights` (width × height samples, row-major, row 0 first) at each of
-/// `levels`, by marching squares (saddles decided by the cell's mean) with the segments joined
+/// `levels` (ascending), by marching squares (saddles decided by the cell's mean) with the segments joined
 /// into lines. A sample at or above a level counts as above it. A crossing point depends only
 /// on the two samples of its grid edge, so two grids that share a row or column of samples
 /// cross it at the same points.
