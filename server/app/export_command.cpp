@@ -42,7 +42,8 @@ constexpr const char* kExportUsage =
     "(and --bbox, degrees) to a PMTiles v3 or MBTiles 1.3 archive, byte for byte the tiles\n"
     "`strahler serve` sends. --format defaults to the extension of FILE. png is Terrain-RGB\n"
     "(the default), relief a colour-relief picture, mvt the vector tiles (gzipped; no --size);\n"
-    "N: pixels per side, 16..1024, default 256. --threads: default all cores; the archive is the same for any count. Identical\n"
+    "N: pixels per side, 16..1024, default 256. --threads: default all cores; the archive is the "
+    "same for any count. Identical\n"
     "tiles (the open sea) are stored once.\n"
     "More than --max-tiles tiles (default 5000000) are refused. The archive is written to\n"
     "FILE.tmp.PID and renamed when complete; on an error or SIGINT/SIGTERM nothing is left.\n";
@@ -89,8 +90,8 @@ base::Result<TileFormat> archiveTileFormat(const std::string& name) {
       f != TileFormat::kRelief && f != TileFormat::kMvt)
     return makeError(ErrorCode::kInvalidInput,
                      "--tile " + name +
-                         ": archives hold PNG or vector tiles here: use png (Terrain-RGB), "
-                         "terrarium, png16, relief or mvt");
+                         ": archives hold PNG tiles here (png for Terrain-RGB, terrarium, png16, "
+                         "relief) or vector tiles (mvt)");
   return f;
 }
 
@@ -249,7 +250,8 @@ base::Status renderInOrder(const TileService& service, const ExportOptions& opti
                            const std::vector<std::uint64_t>& ids, archive::TileArchiveSink& sink,
                            TerminalProgress& progress) {
   OrderedRenderer renderer(
-      service, {options.tile, options.size, options.threads, options.tile == TileFormat::kMvt}, ids);
+      service, {options.tile, options.size, options.threads, options.tile == TileFormat::kMvt},
+      ids);
   const auto start = Clock::now();
   auto last = start - std::chrono::seconds(1);
   for (std::size_t written = 0; written < ids.size();) {

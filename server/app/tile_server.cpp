@@ -193,10 +193,10 @@ void TileServer::handleWorld(const ServedWorld& w, Endpoint endpoint, const Pars
     const auto origin = requestOrigin(options_.publicUrl, request);
     if (!origin)
       return done(http::errorResponse(400, origin.error().message));
-    http::Response r = jsonResponse(vectorTileJson(w.id, origin.value() + "/worlds/" + w.id,
-                                                   w.bounds.west, w.bounds.south, w.bounds.east,
-                                                   w.bounds.north, w.center),
-                                    "tilejson");
+    http::Response r =
+        jsonResponse(vectorTileJson(w.id, origin.value() + "/worlds/" + w.id, w.bounds.west,
+                                    w.bounds.south, w.bounds.east, w.bounds.north, w.center),
+                     "tilejson");
     if (options_.publicUrl.empty()) // as tileJson(): the URLs depend on these headers
       r.headers.emplace_back("Vary", "X-Forwarded-Proto, X-Forwarded-Host");
     return done(std::move(r));

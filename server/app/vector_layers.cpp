@@ -22,7 +22,8 @@ using vector_tile::Point;
 constexpr double kExtent = vector_tile::kDefaultExtent;
 constexpr ClipBox kBox{-kVectorBuffer, kExtent + kVectorBuffer};
 
-MercatorLine mercatorLine(std::span<const Vec2> local, const geometry::LocalProjection& projection) {
+MercatorLine mercatorLine(std::span<const Vec2> local,
+                          const geometry::LocalProjection& projection) {
   MercatorLine line;
   line.points.reserve(local.size());
   for (const Vec2 p : local)
@@ -105,8 +106,8 @@ WorldVectors projectWorldVectors(const construction::WorldData& world,
                                  const geometry::LocalProjection& projection) {
   WorldVectors out;
   render::forEachRiverSection(world, [&](const render::RiverSection& s) {
-    out.rivers.push_back({mercatorLine(s.line, projection), s.strahler, s.flow, s.widthDown,
-                          s.rosgen});
+    out.rivers.push_back(
+        {mercatorLine(s.line, projection), s.strahler, s.flow, s.widthDown, s.rosgen});
     out.maxOrder = std::max(out.maxOrder, s.strahler);
   });
   for (const geometry::Polygon& polygon : world.land) {
@@ -268,23 +269,22 @@ std::string vectorLayersJson(int minZoom, int maxZoom) {
                 {"maxzoom", maxZoom},
                 {"description", description}};
   };
-  return json::array(
-             {layer("water", {{"kind", "String: sea or lake"}}, "the sea and the lakes"),
-              layer("contours",
-                    {{"elevation", "Number: m"}, {"index", "Boolean: every fifth level"}},
-                    "isolines of the terrain above 0 m"),
-              layer("rivers",
-                    {{"order", "Number: Strahler order"},
-                     {"flow", "Number: m3/s at the downstream end"},
-                     {"width", "Number: channel width at the downstream end, m"},
-                     {"rosgen", "String: Rosgen type"}},
-                    "the carved rivers, the orders visible at the zoom"),
-              layer("features",
-                    {{"kind", "String: mountain, ridge or river"},
-                     {"name", "String"},
-                     {"elevation", "Number: m"},
-                     {"radius", "Number: m"}},
-                    "the artist's vector map")})
+  return json::array({layer("water", {{"kind", "String: sea or lake"}}, "the sea and the lakes"),
+                      layer("contours",
+                            {{"elevation", "Number: m"}, {"index", "Boolean: every fifth level"}},
+                            "isolines of the terrain above 0 m"),
+                      layer("rivers",
+                            {{"order", "Number: Strahler order"},
+                             {"flow", "Number: m3/s at the downstream end"},
+                             {"width", "Number: channel width at the downstream end, m"},
+                             {"rosgen", "String: Rosgen type"}},
+                            "the carved rivers, the orders visible at the zoom"),
+                      layer("features",
+                            {{"kind", "String: mountain, ridge or river"},
+                             {"name", "String"},
+                             {"elevation", "Number: m"},
+                             {"radius", "Number: m"}},
+                            "the artist's vector map")})
       .dump();
 }
 

@@ -31,10 +31,10 @@ struct MercatorLine {
 
 /// A river section of the world (render::forEachRiverSection) in normalised Web Mercator.
 struct MercatorRiver {
-  MercatorLine line;                                           ///< Upstream first.
-  int order = 1;                                               ///< Strahler order.
-  double flow = 0.0;                                           ///< m³/s, downstream end.
-  double width = 0.0;                                          ///< Channel width downstream, m.
+  MercatorLine line;                                               ///< Upstream first.
+  int order = 1;                                                   ///< Strahler order.
+  double flow = 0.0;                                               ///< m³/s, downstream end.
+  double width = 0.0;                                              ///< Channel width downstream, m.
   primitives::RiverType rosgen = primitives::RiverType::kStraight; ///< Rosgen type.
 };
 
@@ -46,9 +46,9 @@ struct MercatorPolygon {
 
 /// The vector geometry of a world, projected once: the rivers, the land and the artist's map.
 struct WorldVectors {
-  std::vector<MercatorRiver> rivers;  ///< Every river section.
-  std::vector<MercatorPolygon> land;  ///< The land polygons.
-  int maxOrder = 1;                   ///< The largest Strahler order of the world.
+  std::vector<MercatorRiver> rivers;         ///< Every river section.
+  std::vector<MercatorPolygon> land;         ///< The land polygons.
+  int maxOrder = 1;                          ///< The largest Strahler order of the world.
   const input::Features* features = nullptr; ///< The artist's vector map (the world's).
 };
 

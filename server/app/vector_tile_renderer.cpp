@@ -1,8 +1,8 @@
 #include "vector_tile_renderer.h"
 
+#include "gzip.h"
 #include "render_clock.h"
 
-#include "gzip.h"
 #include "strahler/vector_tile/vector_tile.h"
 
 namespace strahler::app {

@@ -18,8 +18,7 @@ namespace strahler::app {
 class VectorTileRenderer final : public TileRenderer {
 public:
   /// A renderer over `world` (which must outlive it), seen through `projection`.
-  VectorTileRenderer(const construction::World& world,
-                     const geometry::LocalProjection& projection);
+  VectorTileRenderer(const construction::World& world, const geometry::LocalProjection& projection);
 
   /// See TileRenderer::render; kInvalidInput outside the Web Mercator pyramid.
   base::Result<RenderedTile> render(const RenderContext& context, const TileRequest& request,

@@ -229,7 +229,8 @@ TEST(VectorTileServer, ContoursOfNeighboursMeetAtTheirSharedEdge) {
 /// Longitude/latitude of the point (u, v) of `tile` (0..1 from its north-west corner).
 geometry::Vec2 lonLatIn(const tiling::TileId& tile, double u, double v) {
   const double n = std::ldexp(1.0, tile.z);
-  const double mx = (static_cast<double>(tile.x) + u) / n, my = (static_cast<double>(tile.y) + v) / n;
+  const double mx = (static_cast<double>(tile.x) + u) / n,
+               my = (static_cast<double>(tile.y) + v) / n;
   return {mx * 360.0 - 180.0,
           std::atan(std::sinh(std::numbers::pi * (1.0 - 2.0 * my))) * 180.0 / std::numbers::pi};
 }

@@ -1,7 +1,8 @@
 // Vector tiles (issue 28): a Mapbox Vector Tile of Mallorca's Serra de Tramuntana at zooms 10,
 // 12 and 14 through the tile service (water, contours, rivers, features), its evaluation of the
 // 258² contour grid alone, and a 256² Terrain-RGB heightmap tile of the same zoom as the
-// baseline of the same run. Run with `taskset -c 1 build/release/tests/bench/strahler_vector_bench`.
+// baseline of the same run. Run with `taskset -c 1
+// build/release/tests/bench/strahler_vector_bench`.
 #include "test_worlds.h"
 #include "tile_service.h"
 #include "vector_layers.h"

@@ -133,16 +133,15 @@ bool relief(const app::TileService& service, const fs::path& dir, tiling::Scheme
 /// rivers by its own Web Mercator.
 bool vector(const app::TileService& service, const fs::path& dir, const tiling::TileId& tile,
             const std::string& name) {
-  auto rendered = service.render({tiling::SchemeKind::kWebMercator, tile, app::TileFormat::kMvt,
-                                  {}, {}});
+  auto rendered =
+      service.render({tiling::SchemeKind::kWebMercator, tile, app::TileFormat::kMvt, {}, {}});
   if (!rendered)
     return false;
   const construction::WorldData& world = service.world().data();
   const geometry::LocalProjection projection(world.projectionCenter.x, world.projectionCenter.y);
   int maxOrder = 1;
-  render::forEachRiverSection(world, [&](const render::RiverSection& s) {
-    maxOrder = std::max(maxOrder, s.strahler);
-  });
+  render::forEachRiverSection(
+      world, [&](const render::RiverSection& s) { maxOrder = std::max(maxOrder, s.strahler); });
   const int minOrder = app::minRiverOrder(tile.z, maxOrder);
   std::string rivers;
   render::forEachRiverSection(world, [&](const render::RiverSection& s) {
@@ -155,8 +154,8 @@ bool vector(const app::TileService& service, const fs::path& dir, const tiling::
     }
     rivers += "]";
   });
-  const std::string json = "{\"z\":" + std::to_string(tile.z) + ",\"x\":" +
-                           std::to_string(tile.x) + ",\"y\":" + std::to_string(tile.y) +
+  const std::string json = "{\"z\":" + std::to_string(tile.z) + ",\"x\":" + std::to_string(tile.x) +
+                           ",\"y\":" + std::to_string(tile.y) +
                            ",\"buffer\":" + std::to_string(app::kVectorBuffer) +
                            ",\"features\":" + (world.features.empty() ? "false" : "true") +
                            ",\"rivers\":" + (rivers.empty() ? "[]" : rivers + "]") + "}\n";

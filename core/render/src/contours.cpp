@@ -49,19 +49,37 @@ private:
 /// The segments of cell (i, j) at `level` (marching squares; saddles by the cell's mean).
 void cellSegments(const Grid& g, int i, int j, double level, std::vector<Segment>& out) {
   // Corners north-west (1), north-east (2), south-east (4), south-west (8); at or above: set.
-  const double nw = g.at(i, j), ne = g.at(i + 1, j), se = g.at(i + 1, j + 1),
-               sw = g.at(i, j + 1);
-  const int mask = (nw >= level ? 1 : 0) | (ne >= level ? 2 : 0) | (se >= level ? 4 : 0) |
-                   (sw >= level ? 8 : 0);
+  const double nw = g.at(i, j), ne = g.at(i + 1, j), se = g.at(i + 1, j + 1), sw = g.at(i, j + 1);
+  const int mask =
+      (nw >= level ? 1 : 0) | (ne >= level ? 2 : 0) | (se >= level ? 4 : 0) | (sw >= level ? 8 : 0);
   const EdgeId n = g.east(i, j), e = g.south(i + 1, j), s = g.east(i, j + 1), w = g.south(i, j);
   switch (mask) {
-  case 1: case 14: out.push_back({w, n}); break;
-  case 2: case 13: out.push_back({n, e}); break;
-  case 3: case 12: out.push_back({w, e}); break;
-  case 4: case 11: out.push_back({e, s}); break;
-  case 6: case 9: out.push_back({n, s}); break;
-  case 7: case 8: out.push_back({w, s}); break;
-  case 5: case 10:
+  case 1:
+  case 14:
+    out.push_back({w, n});
+    break;
+  case 2:
+  case 13:
+    out.push_back({n, e});
+    break;
+  case 3:
+  case 12:
+    out.push_back({w, e});
+    break;
+  case 4:
+  case 11:
+    out.push_back({e, s});
+    break;
+  case 6:
+  case 9:
+    out.push_back({n, s});
+    break;
+  case 7:
+  case 8:
+    out.push_back({w, s});
+    break;
+  case 5:
+  case 10:
     // Corners north-west and south-east on one side: joined through the centre when the mean
     // is on their side too.
     if ((mask == 5) == (0.25 * (nw + ne + se + sw) >= level)) {
@@ -114,8 +132,8 @@ private:
 
 /// Joins the segments of one level into lines: open lines from the edges with one segment
 /// (the grid's border) first, then the loops.
-void joinSegments(const Grid& g, const std::vector<Segment>& segments, double level,
-                  EdgeEnds& ends, std::vector<ContourLine>& out) {
+void joinSegments(const Grid& g, const std::vector<Segment>& segments, double level, EdgeEnds& ends,
+                  std::vector<ContourLine>& out) {
   ends.fill(segments);
   std::vector<bool> used(segments.size(), false);
   for (int pass = 0; pass < 2; ++pass)
@@ -161,8 +179,8 @@ std::vector<double> contourLevels(double lo, double hi, double interval) {
 std::vector<ContourLine> traceContours(std::span<const double> heights, int width, int height,
                                        std::span<const double> levels) {
   STRAHLER_ASSERT(width >= 0 && height >= 0 &&
-                      heights.size() == static_cast<std::size_t>(width) *
-                                            static_cast<std::size_t>(height),
+                      heights.size() ==
+                          static_cast<std::size_t>(width) * static_cast<std::size_t>(height),
                   "the heights must fill the grid");
   STRAHLER_ASSERT(std::is_sorted(levels.begin(), levels.end()), "levels must ascend");
   const Grid g(heights, width);
@@ -171,8 +189,8 @@ std::vector<ContourLine> traceContours(std::span<const double> heights, int widt
   std::vector<std::vector<Segment>> byLevel(levels.size());
   for (int j = 0; j + 1 < height; ++j)
     for (int i = 0; i + 1 < width; ++i) {
-      const auto [lo, hi] = std::minmax({g.at(i, j), g.at(i + 1, j), g.at(i + 1, j + 1),
-                                         g.at(i, j + 1)});
+      const auto [lo, hi] =
+          std::minmax({g.at(i, j), g.at(i + 1, j), g.at(i + 1, j + 1), g.at(i, j + 1)});
       for (auto l = std::upper_bound(levels.begin(), levels.end(), lo);
            l != levels.end() && *l <= hi; ++l)
         cellSegments(g, i, j, *l, byLevel[static_cast<std::size_t>(l - levels.begin())]);

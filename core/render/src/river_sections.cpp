@@ -68,8 +68,9 @@ void forEachRiverSection(const construction::WorldData& world,
     const RiverPrimitive* up = byNode[head];
     s.widthUp = up ? up->widthUp : primitives::channelWidth(world.flow[head]);
     const RiverPrimitive* down = byNode[lastUpstream];
-    s.widthDown = down ? down->widthDown
-                       : primitives::channelWidth(world.flow[net.nodes[lastUpstream].parent.index()]);
+    s.widthDown =
+        down ? down->widthDown
+             : primitives::channelWidth(world.flow[net.nodes[lastUpstream].parent.index()]);
     s.elevationUp = top.elevation;
     s.elevationDown = net.nodes[cur].elevation;
     visit(s);

@@ -88,10 +88,14 @@ std::vector<Vec2> clipRing(std::span<const Vec2> ring, const ClipBox& box) {
   const auto atY = [](double y) {
     return [y](Vec2 a, Vec2 b) { return Vec2{a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y), y}; };
   };
-  out = clipAgainst(out, [lo](Vec2 p) { return p.x >= lo; }, atX(lo));
-  out = clipAgainst(out, [hi](Vec2 p) { return p.x <= hi; }, atX(hi));
-  out = clipAgainst(out, [lo](Vec2 p) { return p.y >= lo; }, atY(lo));
-  out = clipAgainst(out, [hi](Vec2 p) { return p.y <= hi; }, atY(hi));
+  out = clipAgainst(
+      out, [lo](Vec2 p) { return p.x >= lo; }, atX(lo));
+  out = clipAgainst(
+      out, [hi](Vec2 p) { return p.x <= hi; }, atX(hi));
+  out = clipAgainst(
+      out, [lo](Vec2 p) { return p.y >= lo; }, atY(lo));
+  out = clipAgainst(
+      out, [hi](Vec2 p) { return p.y <= hi; }, atY(hi));
   if (out.size() < 3)
     out.clear();
   return out;

@@ -1,8 +1,8 @@
 // The MVT 2.1 encoder: the specification's own geometry examples (4.3.5), read back with the
 // generated protobuf types, and round trips through decodeTile.
+#include "mvt/vector_tile.pb.h"
 #include "result_matchers.h"
 
-#include "mvt/vector_tile.pb.h"
 #include "strahler/vector_tile/vector_tile.h"
 
 #include <gtest/gtest.h>
@@ -99,8 +99,7 @@ TEST(VectorTileEncoder, RepeatsAndDegeneratePartsAreDropped) {
   STRAHLER_ASSIGN_OR_ASSERT(const Tile back, decodeTile(encodeTile(tile)));
   ASSERT_EQ(back.layers.size(), 1u);
   ASSERT_EQ(back.layers[0].features.size(), 1u);
-  EXPECT_EQ(back.layers[0].features[0].parts,
-            (std::vector<std::vector<Point>>{{{1, 1}, {2, 2}}}));
+  EXPECT_EQ(back.layers[0].features[0].parts, (std::vector<std::vector<Point>>{{{1, 1}, {2, 2}}}));
 }
 
 TEST(VectorTileDecoder, RefusesBytesThatAreNotATile) {

@@ -17,7 +17,7 @@ struct RiverSection {
   int strahler = 1;                 ///< Horton–Strahler order.
   std::uint32_t tree = 0;           ///< Index of its tree (of its mouth).
   primitives::RiverType rosgen = primitives::RiverType::kStraight; ///< Its Rosgen type.
-  double flow = 0.0;          ///< m³/s at its downstream end.
+  double flow = 0.0;                                               ///< m³/s at its downstream end.
   double widthUp = 0.0;       ///< Channel width at its upstream end, m.
   double widthDown = 0.0;     ///< Channel width at its downstream end, m.
   double elevationUp = 0.0;   ///< Elevation of its upstream node, m.

@@ -32,7 +32,6 @@ double ringArea2(std::span<const geometry::Vec2> ring) noexcept;
 
 /// `line` simplified by Douglas–Peucker within `tolerance` tile units, rounded to integers,
 /// consecutive repeats dropped. A ring is treated as a line that returns to its first point.
-std::vector<Point> toTilePoints(std::span<const geometry::Vec2> line, double tolerance,
-                                bool ring);
+std::vector<Point> toTilePoints(std::span<const geometry::Vec2> line, double tolerance, bool ring);
 
 } // namespace strahler::vector_tile

@@ -46,9 +46,9 @@ struct Feature {
 
 /// A named layer of features sharing one extent.
 struct Layer {
-  std::string name;                       ///< Unique within the tile.
+  std::string name;                      ///< Unique within the tile.
   std::uint32_t extent = kDefaultExtent; ///< Tile coordinates per side.
-  std::vector<Feature> features;          ///< In order.
+  std::vector<Feature> features;         ///< In order.
 
   friend bool operator==(const Layer&, const Layer&) = default;
 };
