@@ -11,6 +11,9 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <numbers>
 #include <string>
@@ -224,6 +227,31 @@ TEST(VectorTileServer, ContoursOfNeighboursMeetAtTheirSharedEdge) {
   EXPECT_GE(expectSameCrossings(crossings(tile, extent), crossings(east, 0)), 3u);
   EXPECT_GE(expectSameCrossings(crossings(east, 0), crossings(tile, extent)), 3u);
   EXPECT_GE(expectSameCrossings(crossings(tile, extent, true), crossings(south, 0, true)), 3u);
+}
+
+// tests/data/golden/island_vector_12.mvt: the hills' tile as served (not gzipped);
+// STRAHLER_UPDATE_GOLDEN=1 rewrites it. Any change to the evaluation, the layers or the
+// encoding shows here; two servers over the same world send the same bytes.
+TEST(VectorTileServer, TheHillsTileIsTheGoldenOne) {
+  Running s;
+  const HttpResponse r = request(s.port(), path(kHills));
+  ASSERT_EQ(r.status, 200);
+  {
+    Running other;
+    EXPECT_TRUE(request(other.port(), path(kHills)).body == r.body) << "not deterministic";
+  }
+  const std::filesystem::path golden =
+      std::filesystem::path(STRAHLER_TEST_DATA_DIR) / "golden" / "island_vector_12.mvt";
+  if (const char* update = std::getenv("STRAHLER_UPDATE_GOLDEN");
+      update != nullptr && std::string(update) == "1") {
+    std::ofstream(golden, std::ios::binary) << r.body;
+    GTEST_SKIP() << "rewrote " << golden;
+  }
+  std::ifstream in(golden, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  ASSERT_FALSE(bytes.empty()) << golden;
+  EXPECT_TRUE(r.body == bytes) << "the tile differs from " << golden << " (" << r.body.size()
+                               << " bytes against " << bytes.size() << ")";
 }
 
 /// Longitude/latitude of the point (u, v) of `tile` (0..1 from its north-west corner).
