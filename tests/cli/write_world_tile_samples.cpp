@@ -6,7 +6,8 @@
 //   <dir>/relief/<name>.png + .rgb + .json         (check_relief.mjs: colour relief, the .rgb
 //                                                   pixels shaded from World::height)
 //   <dir>/vector/<name>.mvt + .json                (check_mvt.mjs: the tile, and the world's
-//                                                   river lines in degrees)
+//                                                   river lines in degrees; or, for the
+//                                                   encoder's sample, the exact content)
 #include "mesh_renderer.h"
 #include "test_worlds.h"
 #include "tile_service.h"
@@ -16,6 +17,7 @@
 #include "strahler/encoding/mesh.h"
 #include "strahler/render/river_sections.h"
 #include "strahler/render/shaded_relief.h"
+#include "strahler/vector_tile/vector_tile.h"
 
 #include <charconv>
 #include <cstdio>
@@ -163,6 +165,41 @@ bool vector(const app::TileService& service, const fs::path& dir, const tiling::
          write(dir / (name + ".json"), json);
 }
 
+/// A tile made by the MVT encoder directly, with every geometry type (a multipoint, two lines,
+/// a polygon with a hole), negative and buffer coordinates and every value type, and its
+/// content as JSON for check_mvt.mjs to compare with what @mapbox/vector-tile decodes.
+bool encoderSample(const fs::path& dir) {
+  using vector_tile::GeometryType;
+  const vector_tile::Tile tile{{
+      {"points",
+       4096,
+       {{GeometryType::kPoint, {{{1, 2}}, {{-30, 4100}}}, {{"name", std::string("Río")}}, 9}}},
+      {"lines",
+       4096,
+       {{GeometryType::kLineString,
+         {{{0, 0}, {4096, 4096}}, {{-64, 10}, {10, -64}, {4160, 4160}}},
+         {{"order", std::int64_t{-3}}, {"flow", 12.25}, {"index", true}},
+         0}}},
+      {"polygons",
+       4096,
+       {{GeometryType::kPolygon,
+         {{{0, 0}, {100, 0}, {100, 100}, {0, 100}}, {{10, 10}, {10, 90}, {90, 90}, {90, 10}}},
+         {{"kind", std::string("lake")}, {"big", false}},
+         0}}},
+  }};
+  const std::string json =
+      R"({"exact":{"points":[{"type":1,"id":9,"properties":{"name":"Río"},)"
+      R"("geometry":[[[1,2]],[[-30,4100]]]}],)"
+      R"("lines":[{"type":2,"properties":{"order":-3,"flow":12.25,"index":true},)"
+      R"("geometry":[[[0,0],[4096,4096]],[[-64,10],[10,-64],[4160,4160]]]}],)"
+      R"("polygons":[{"type":3,"properties":{"kind":"lake","big":false},)"
+      R"("geometry":[[[0,0],[100,0],[100,100],[0,100],[0,0]],)"
+      R"([[10,10],[10,90],[90,90],[90,10],[10,10]]]}]}})"
+      "\n";
+  return write(dir / "encoder.mvt", vector_tile::encodeTile(tile)) &&
+         write(dir / "encoder.json", json);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -191,7 +228,8 @@ int main(int argc, char** argv) {
              "island-z12-1737") &&
       relief(service, dir / "relief", tiling::SchemeKind::kLocal, {2, 1, 2}, 64, "local-z2-1-2") &&
       vector(service, dir / "vector", {10, 434, 373}, "island-z10") &&
-      vector(service, dir / "vector", {12, 1736, 1494}, "island-z12");
+      vector(service, dir / "vector", {12, 1736, 1494}, "island-z12") &&
+      encoderSample(dir / "vector");
   if (!ok) {
     std::fprintf(stderr, "write_world_tile_samples: could not render or write a tile\n");
     return 1;

@@ -13,6 +13,10 @@
 //   sections in degrees, projected here by our own Web Mercator), and every vertex of those
 //   lines inside the tile is within RIVER_TOLERANCE of a line of the tile.
 //
+// A sample whose JSON has "exact" (the encoder's own sample: every geometry type and value
+// type) must decode to exactly that: per layer, each feature's type, id, properties and
+// geometry (rings closed, as loadGeometry gives them).
+//
 // Usage: node check_mvt.mjs <folder>. Exits 1 on any mismatch or if nothing was checked.
 
 import fs from "node:fs";
@@ -74,9 +78,32 @@ const LAYERS = {
   features: { type: null, fields: { kind: "string" } },
 };
 
+function checkExact(tile, exact) {
+  const problems = [];
+  const names = Object.keys(tile.layers).sort().join(",");
+  if (names !== Object.keys(exact).sort().join(",")) problems.push(`layers ${names}`);
+  for (const [id, features] of Object.entries(exact)) {
+    const layer = tile.layers[id];
+    if (!layer || layer.length !== features.length || layer.version !== 2) {
+      problems.push(`${id}: ${layer?.length} features, version ${layer?.version}`);
+      continue;
+    }
+    features.forEach((want, i) => {
+      const f = layer.feature(i);
+      const geometry = f.loadGeometry().map((part) => part.map((p) => [p.x, p.y]));
+      const got = { type: f.type, ...(f.id ? { id: f.id } : {}), properties: f.properties, geometry };
+      for (const key of ["type", "id", "properties", "geometry"])
+        if (JSON.stringify(got[key]) !== JSON.stringify(want[key]))
+          problems.push(`${id}[${i}].${key}: ${JSON.stringify(got[key])}, expected ${JSON.stringify(want[key])}`);
+    });
+  }
+  return { problems, water: false, summary: `exactly the encoder's content (${names})` };
+}
+
 function checkSample(decode, dir, name) {
   const expected = JSON.parse(fs.readFileSync(path.join(dir, `${name}.json`), "utf8"));
   const tile = decode(fs.readFileSync(path.join(dir, `${name}.mvt`)));
+  if (expected.exact) return checkExact(tile, expected.exact);
   const problems = [];
   const lo = -expected.buffer, hi = EXTENT + expected.buffer;
   // An all-land tile has no water layer (empty layers are left out); the folder needs one.
