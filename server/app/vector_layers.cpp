@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace strahler::app {
 namespace {
@@ -33,6 +34,40 @@ MercatorLine mercatorLine(std::span<const Vec2> local,
   return line;
 }
 
+/// mercatorLine() of a ring, with the boxes of its runs of edges.
+MercatorLine mercatorRing(std::span<const Vec2> local,
+                          const geometry::LocalProjection& projection) {
+  MercatorLine ring = mercatorLine(local, projection);
+  const std::size_t n = ring.points.size();
+  for (std::size_t first = 0; first < n; first += kRingChunk) {
+    geometry::Aabb box;
+    for (std::size_t i = first; i <= std::min(first + kRingChunk, n); ++i)
+      box.add(ring.points[i % n]); // the edge i-1 → i; the last run closes the ring
+    ring.chunks.push_back(box);
+  }
+  return ring;
+}
+
+bool overlaps(const geometry::Aabb& a, const geometry::Aabb& b) noexcept {
+  return a.min.x <= b.max.x && a.max.x >= b.min.x && a.min.y <= b.max.y && a.max.y >= b.min.y;
+}
+
+/// True when `p` is inside `ring` (crossing number, runs whose box misses p's row skipped).
+bool ringContains(const MercatorLine& ring, Vec2 p) noexcept {
+  const std::size_t n = ring.points.size();
+  bool inside = false;
+  for (std::size_t c = 0; c < ring.chunks.size(); ++c) {
+    if (p.y < ring.chunks[c].min.y || p.y > ring.chunks[c].max.y)
+      continue;
+    for (std::size_t i = c * kRingChunk; i < std::min((c + 1) * kRingChunk, n); ++i) {
+      const Vec2 a = ring.points[i], b = ring.points[(i + 1) % n];
+      if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x))
+        inside = !inside;
+    }
+  }
+  return inside;
+}
+
 /// Tile units of normalised Web Mercator for one tile: tile = (m · 2^z − (x, y)) · extent.
 class TileFrame {
 public:
@@ -45,9 +80,14 @@ public:
   }
 
   /// True when `line`'s box meets the tile and its buffer.
-  bool meets(const MercatorLine& line) const noexcept {
-    return line.box.min.x <= box_.max.x && line.box.max.x >= box_.min.x &&
-           line.box.min.y <= box_.max.y && line.box.max.y >= box_.min.y;
+  bool meets(const MercatorLine& line) const noexcept { return overlaps(line.box, box_); }
+  /// For a ring whose boundary stays out of the tile and its buffer (no run's box meets
+  /// them): whether it holds them; nullopt when its boundary may enter them.
+  std::optional<bool> holds(const MercatorLine& ring) const noexcept {
+    for (const geometry::Aabb& chunk : ring.chunks)
+      if (overlaps(chunk, box_))
+        return std::nullopt;
+    return ringContains(ring, box_.center());
   }
   Vec2 toTile(Vec2 m) const noexcept {
     return {(m.x * scale_ - x_) * kExtent, (m.y * scale_ - y_) * kExtent};
@@ -111,9 +151,9 @@ WorldVectors projectWorldVectors(const construction::WorldData& world,
     out.maxOrder = std::max(out.maxOrder, s.strahler);
   });
   for (const geometry::Polygon& polygon : world.land) {
-    MercatorPolygon p{mercatorLine(polygon.outer, projection), {}};
+    MercatorPolygon p{mercatorRing(polygon.outer, projection), {}};
     for (const geometry::Ring& hole : polygon.holes)
-      p.holes.push_back(mercatorLine(hole, projection));
+      p.holes.push_back(mercatorRing(hole, projection));
     out.land.push_back(std::move(p));
   }
   out.features = &world.features;
@@ -163,16 +203,30 @@ Layer waterLayer(const WorldVectors& world, const tiling::TileId& tile) {
   for (const MercatorPolygon& polygon : world.land) {
     if (!frame.meets(polygon.outer))
       continue;
-    const std::vector<Vec2> outer = frame.toTile(polygon.outer.points);
-    const std::vector<Vec2> clipped = vector_tile::clipRing(outer, kBox);
-    if (std::abs(vector_tile::ringArea2(clipped)) >= squareArea * (1.0 - 1e-9))
-      allLand = true; // the coast is outside the tile and its buffer
-    else if (std::vector<Point> ring = tileRing(outer, false); !ring.empty())
-      sea.parts.push_back(std::move(ring));
-    for (const MercatorLine& hole : polygon.holes)
-      if (frame.meets(hole))
-        if (std::vector<Point> ring = tileRing(frame.toTile(hole.points), true); !ring.empty())
-          lakes.parts.push_back(std::move(ring));
+    // Far from the coast (most tiles of a large world) the ring is not clipped: it holds the
+    // tile or misses it.
+    if (const std::optional<bool> holds = frame.holds(polygon.outer); holds && !*holds)
+      continue; // its holes are inside it
+    else if (holds) {
+      allLand = true;
+    } else {
+      const std::vector<Vec2> outer = frame.toTile(polygon.outer.points);
+      const std::vector<Vec2> clipped = vector_tile::clipRing(outer, kBox);
+      if (std::abs(vector_tile::ringArea2(clipped)) >= squareArea * (1.0 - 1e-9))
+        allLand = true; // the coast is outside the tile and its buffer
+      else if (std::vector<Point> ring = tileRing(outer, false); !ring.empty())
+        sea.parts.push_back(std::move(ring));
+    }
+    for (const MercatorLine& hole : polygon.holes) {
+      if (!frame.meets(hole))
+        continue;
+      const std::optional<bool> holds = frame.holds(hole);
+      if (holds && !*holds)
+        continue;
+      std::vector<Point> ring = tileRing(holds ? square : frame.toTile(hole.points), true);
+      if (!ring.empty())
+        lakes.parts.push_back(std::move(ring));
+    }
   }
   if (!allLand) {
     std::vector<Point> outline = tileRing(square, true);

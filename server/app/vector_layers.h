@@ -27,7 +27,13 @@ inline constexpr int kContourGrid = 256;
 struct MercatorLine {
   std::vector<geometry::Vec2> points; ///< Normalised Web Mercator.
   geometry::Aabb box;                 ///< Bounding box of the points.
+  /// Rings only: the boxes of runs of kRingChunk edges (the closing edge in the last), so that
+  /// a tile the ring's boundary does not enter skips its clipping.
+  std::vector<geometry::Aabb> chunks;
 };
+
+/// Edges per box of MercatorLine::chunks.
+inline constexpr std::size_t kRingChunk = 64;
 
 /// A river section of the world (render::forEachRiverSection) in normalised Web Mercator.
 struct MercatorRiver {
