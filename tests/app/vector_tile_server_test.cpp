@@ -2,8 +2,11 @@
 // layers' contents, and contours that meet across tile edges.
 #include "gzip.h"
 #include "result_matchers.h"
+#include "router.h"
+#include "tile_request.h"
 #include "tile_server_harness.h"
 #include "vector_layers.h"
+#include "vector_route.h"
 
 #include "strahler/vector_tile/vector_tile.h"
 
@@ -59,6 +62,25 @@ vector_tile::Tile fetch(const Running& s, const tiling::TileId& t) {
   auto tile = vector_tile::decodeTile(r.body);
   EXPECT_TRUE(tile.ok()) << path(t);
   return tile.ok() ? tile.value() : vector_tile::Tile{};
+}
+
+TEST(VectorTileRoute, TheRouterAndTheParserNameTheTileAndItsCoding) {
+  EXPECT_EQ(routeOf({"worlds", "w", "vector", "tilejson.json"}).endpoint,
+            Endpoint::kVectorTileJson);
+  EXPECT_EQ(routeOf({"worlds", "w", "vector", "1", "2", "3.mvt"}).endpoint, Endpoint::kVectorTile);
+  EXPECT_EQ(routeOf({"worlds", "w", "vector", "other.json"}).endpoint, Endpoint::kNoSuchResource);
+  const std::vector<std::string> s = {"worlds", "w", "vector", "12", "1736", "1494.mvt"};
+  STRAHLER_ASSIGN_OR_ASSERT(const TileRequest plain, parseVectorTileRoute("w", s, {}, ""));
+  STRAHLER_ASSIGN_OR_ASSERT(const TileRequest zipped,
+                            parseVectorTileRoute("w", s, {}, "br, gzip;q=0.5"));
+  EXPECT_EQ(plain.kind(), TileKind::kVector);
+  EXPECT_EQ(plain.scheme, tiling::SchemeKind::kWebMercator);
+  EXPECT_EQ(plain.tile, kHills);
+  EXPECT_FALSE(plain.options.gzip);
+  EXPECT_TRUE(zipped.options.gzip);
+  EXPECT_EQ(tileKey(plain), "w|tiles|12|1736|1494|mvt|0|id");
+  EXPECT_EQ(tileKey(zipped), "w|tiles|12|1736|1494|mvt|0|gz");
+  EXPECT_FALSE(parseVectorTileRoute("w", s, {{"v", "1"}}, "").ok());
 }
 
 TEST(VectorTileServer, ATileIsAnMvtWithTheTilePipelinesHeaders) {
