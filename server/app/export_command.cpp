@@ -9,6 +9,7 @@
 #include "pmtiles_writer.h"
 #include "terminal_progress.h"
 #include "tile_service.h"
+#include "vector_layers.h"
 
 #include "strahler/store/world_file.h"
 
@@ -35,13 +36,14 @@ using Clock = std::chrono::steady_clock;
 constexpr const char* kExportUsage =
     "usage: strahler export WORLD.world --zooms A-B -o FILE.pmtiles|FILE.mbtiles\n"
     "                       [--format pmtiles|mbtiles] [--scheme web] [--bbox W,S,E,N]\n"
-    "                       [--tile png|terrarium|png16|relief] [--size N] [--threads N]\n"
+    "                       [--tile png|terrarium|png16|relief|mvt] [--size N] [--threads N]\n"
     "                       [--max-tiles N] [--quiet]\n"
     "Writes every Web Mercator tile of the world in zooms A..B (0..18) that touches its bounds\n"
     "(and --bbox, degrees) to a PMTiles v3 or MBTiles 1.3 archive, byte for byte the tiles\n"
     "`strahler serve` sends. --format defaults to the extension of FILE. png is Terrain-RGB\n"
-    "(the default), relief a colour-relief picture; N: pixels per side, 16..1024, default\n"
-    "256. --threads: default all cores; the archive is the same for any count. Identical\n"
+    "(the default), relief a colour-relief picture, mvt the vector tiles (gzipped; no --size);\n"
+    "N: pixels per side, 16..1024, default 256. --threads: default all cores; the archive is the "
+    "same for any count. Identical\n"
     "tiles (the open sea) are stored once.\n"
     "More than --max-tiles tiles (default 5000000) are refused. The archive is written to\n"
     "FILE.tmp.PID and renamed when complete; on an error or SIGINT/SIGTERM nothing is left.\n";
@@ -85,11 +87,11 @@ base::Result<ArchiveKind> archiveKind(const CliArgs& args, const std::string& ou
 base::Result<TileFormat> archiveTileFormat(const std::string& name) {
   STRAHLER_ASSIGN_OR_RETURN(const TileFormat f, parseTileFormat(name));
   if (f != TileFormat::kTerrainRgb && f != TileFormat::kTerrarium && f != TileFormat::kPng16 &&
-      f != TileFormat::kRelief)
+      f != TileFormat::kRelief && f != TileFormat::kMvt)
     return makeError(ErrorCode::kInvalidInput,
                      "--tile " + name +
-                         ": archives hold PNG tiles here: use png (Terrain-RGB), terrarium, png16 "
-                         "or relief");
+                         ": archives hold PNG tiles here (png for Terrain-RGB, terrarium, png16, "
+                         "relief) or vector tiles (mvt)");
   return f;
 }
 
@@ -115,6 +117,8 @@ base::Result<ExportOptions> parseOptions(const CliArgs& args) {
   STRAHLER_ASSIGN_OR_RETURN(const auto size,
                             args.getInt("--size", TileSizes::kRasterMin, TileSizes::kRasterMax));
   o.size = static_cast<int>(size.value_or(TileSizes::kRasterDefault));
+  if (o.tile == TileFormat::kMvt && size)
+    return makeError(ErrorCode::kInvalidInput, "--size: vector tiles have no size to choose");
   STRAHLER_ASSIGN_OR_RETURN(const auto threads, args.getInt("--threads", 1, 256));
   o.threads = static_cast<int>(
       threads.value_or(static_cast<long long>(std::max(1u, std::thread::hardware_concurrency()))));
@@ -245,7 +249,9 @@ void showProgress(TerminalProgress& progress, std::size_t done, std::size_t tota
 base::Status renderInOrder(const TileService& service, const ExportOptions& options,
                            const std::vector<std::uint64_t>& ids, archive::TileArchiveSink& sink,
                            TerminalProgress& progress) {
-  OrderedRenderer renderer(service, {options.tile, options.size, options.threads}, ids);
+  OrderedRenderer renderer(
+      service, {options.tile, options.size, options.threads, options.tile == TileFormat::kMvt},
+      ids);
   const auto start = Clock::now();
   auto last = start - std::chrono::seconds(1);
   for (std::size_t written = 0; written < ids.size();) {
@@ -288,6 +294,12 @@ archive::ArchiveMetadata metadataFor(const construction::WorldData& world, const
     break;
   case TileFormat::kRelief: // a picture, not heights: no encoding
     m.description = "strahler terrain (colour relief: height tint times hillshade)";
+    break;
+  case TileFormat::kMvt: // gzipped, as MBTiles' pbf and PMTiles readers expect
+    m.tileFormat = "pbf";
+    m.description = "strahler vector tiles (water, contours, rivers, features)";
+    m.vectorLayers = vectorLayersJson(o.zooms.first, o.zooms.second);
+    m.gzippedTiles = true;
     break;
   default:
     m.encoding = "mapbox";

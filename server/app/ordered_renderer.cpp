@@ -74,6 +74,7 @@ base::Result<std::string> OrderedRenderer::render(std::uint64_t id) const {
   request.tile = {c.z, c.x, c.y};
   request.format = job_.format;
   request.options.size = job_.size;
+  request.options.gzip = job_.gzip;
   try {
     STRAHLER_ASSIGN_OR_RETURN(RenderedTile tile, service_.render(request));
     return std::move(tile.bytes);

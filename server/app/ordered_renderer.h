@@ -20,6 +20,7 @@ struct RenderJob {
   TileFormat format = TileFormat::kTerrainRgb;
   int size = 0; ///< 0: the format's default.
   int threads = 1;
+  bool gzip = false; ///< Gzip the bytes (vector tiles in archives).
 };
 
 /// Tiles rendered on worker threads and taken in plan order by one writer thread: workers

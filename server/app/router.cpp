@@ -32,6 +32,10 @@ Route routeOf(const std::vector<std::string>& s) {
     route.endpoint = Endpoint::kCesiumLayer;
   else if (s.size() == 6 && s[2] == "cesium")
     route.endpoint = Endpoint::kCesiumTerrain;
+  else if (s.size() == 4 && s[2] == "vector" && s[3] == "tilejson.json")
+    route.endpoint = Endpoint::kVectorTileJson;
+  else if (s.size() == 6 && s[2] == "vector")
+    route.endpoint = Endpoint::kVectorTile;
   return route;
 }
 

@@ -22,6 +22,8 @@ enum class Endpoint {
   kCesiumTerrain,  ///< /worlds/{id}/cesium/{z}/{x}/{y}.terrain (parseCesiumTerrainRoute).
   kNoSuchResource, ///< Anything else under /worlds/{id}: 404 once the world is known.
   kStaticFile,     ///< Anything else: a file of the built viewer, or 404.
+  kVectorTileJson, ///< /worlds/{id}/vector/tilejson.json.
+  kVectorTile,     ///< /worlds/{id}/vector/{z}/{x}/{y}.mvt (parseVectorTileRoute).
 };
 
 /// What a request target names: its endpoint and, under /worlds/{id}, the world.

@@ -21,10 +21,12 @@ base::Result<TileFormat> parseTileFormat(const std::string& name) {
     return TileFormat::kQuantizedMesh;
   if (name == "relief")
     return TileFormat::kRelief;
+  if (name == "mvt")
+    return TileFormat::kMvt;
   return base::makeError(
       base::ErrorCode::kInvalidInput,
       "unknown tile format '" + name +
-          "' (use png, terrarium, png16, tif, exr, drc, glb, relief or terrain)");
+          "' (use png, terrarium, png16, tif, exr, drc, glb, relief, terrain or mvt)");
 }
 
 const char* canonicalFormatName(TileFormat format) noexcept {
@@ -47,6 +49,8 @@ const char* canonicalFormatName(TileFormat format) noexcept {
     return "terrain";
   case TileFormat::kRelief:
     return "relief";
+  case TileFormat::kMvt:
+    return "mvt";
   }
   return "png";
 }
@@ -56,6 +60,8 @@ TileKind tileKind(TileFormat format) noexcept {
     return TileKind::kTerrain;
   if (format == TileFormat::kRelief)
     return TileKind::kRelief;
+  if (format == TileFormat::kMvt)
+    return TileKind::kVector;
   return format == TileFormat::kDraco || format == TileFormat::kGlb ? TileKind::kMesh
                                                                     : TileKind::kHeightmap;
 }
@@ -69,6 +75,8 @@ TileSizeRange tileSizeRange(TileKind kind) noexcept {
     return {TileSizes::kMeshMin, TileSizes::kMeshMax, TileSizes::kMeshDefault};
   if (kind == TileKind::kTerrain)
     return {TileSizes::kTerrainGrid, TileSizes::kTerrainGrid, TileSizes::kTerrainGrid};
+  if (kind == TileKind::kVector) // one size: the contours' grid (vector_layers.h)
+    return {TileSizes::kRasterDefault, TileSizes::kRasterDefault, TileSizes::kRasterDefault};
   return {TileSizes::kRasterMin, TileSizes::kRasterMax, TileSizes::kRasterDefault};
 }
 

@@ -19,6 +19,7 @@ enum class TileFormat {
   kGlb,
   kRelief,        ///< A colour-relief picture (relief).
   kQuantizedMesh, ///< Cesium's quantized-mesh-1.0 (.terrain), geographic pyramid only.
+  kMvt,           ///< A Mapbox Vector Tile 2.1 (.mvt), Web Mercator pyramid only.
 };
 
 /// The kind of data a tile carries; each kind has one renderer (tile_renderer.h), and a
@@ -28,6 +29,7 @@ enum class TileKind {
   kMesh,      ///< A triangle mesh with skirts (drc, glb).
   kRelief,    ///< A colour-relief picture: hypsometric tint × hillshade (relief).
   kTerrain,   ///< A Cesium terrain tile: adaptive mesh, normals, water mask, availability.
+  kVector,    ///< A vector tile: rivers, contours, water, the artist's map (mvt).
 };
 
 /// Size bounds: raster tiles have size² pixels, mesh tiles size² quads ((size+1)² vertices).
@@ -46,10 +48,12 @@ struct TileSizeRange {
 };
 
 /// Parses a format name as used in URLs and on the command line: png (Terrain-RGB),
-/// terrarium, png16, tif, exr, drc, glb, relief (colour relief), terrain (quantized-mesh).
+/// terrarium, png16, tif, exr, drc, glb, relief (colour relief), terrain (quantized-mesh),
+/// mvt (vector tile).
 base::Result<TileFormat> parseTileFormat(const std::string& name);
 
-/// The name of `format` in URLs (png, terrarium, png16, tif, exr, drc, glb, relief, terrain).
+/// The name of `format` in URLs (png, terrarium, png16, tif, exr, drc, glb, relief, terrain,
+/// mvt).
 const char* canonicalFormatName(TileFormat format) noexcept;
 
 /// The kind of tile `format` encodes.

@@ -37,6 +37,8 @@ std::string tileKey(const TileRequest& request) {
     append(request.options.extensions);
     key.append(request.options.gzip ? "|gz" : "|id");
   }
+  if (request.kind() == TileKind::kVector)
+    key.append(request.options.gzip ? "|gz" : "|id");
   return key;
 }
 

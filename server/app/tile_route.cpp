@@ -54,6 +54,8 @@ base::Result<TileRequest> parseTileRoute(const std::string& world,
   STRAHLER_ASSIGN_OR_RETURN(request.format, parseTileFormat(formatName));
   if (request.kind() == TileKind::kTerrain)
     return badTile("Cesium terrain tiles are served under /worlds/{id}/cesium/ (TMS rows)");
+  if (request.kind() == TileKind::kVector)
+    return badTile("vector tiles are served under /worlds/{id}/vector/");
   STRAHLER_ASSIGN_OR_RETURN(request.options.size, tileSize(query, request.format));
   request.world = world;
   request.scheme = s[2] == "local" ? tiling::SchemeKind::kLocal : tiling::SchemeKind::kWebMercator;

@@ -12,6 +12,8 @@
 #include "tile_response.h"
 #include "tile_route.h"
 #include "tile_service.h"
+#include "vector_layers.h"
+#include "vector_route.h"
 #include "world_bounds.h"
 #include "world_documents.h"
 
@@ -187,6 +189,25 @@ void TileServer::handleWorld(const ServedWorld& w, Endpoint endpoint, const Pars
       return done(http::errorResponse(400, parsed.error().message));
     return tile(w, parsed.value(), request, std::move(done));
   }
+  case Endpoint::kVectorTileJson: {
+    const auto origin = requestOrigin(options_.publicUrl, request);
+    if (!origin)
+      return done(http::errorResponse(400, origin.error().message));
+    http::Response r =
+        jsonResponse(vectorTileJson(w.id, origin.value() + "/worlds/" + w.id, w.bounds.west,
+                                    w.bounds.south, w.bounds.east, w.bounds.north, w.center),
+                     "tilejson");
+    if (options_.publicUrl.empty()) // as tileJson(): the URLs depend on these headers
+      r.headers.emplace_back("Vary", "X-Forwarded-Proto, X-Forwarded-Host");
+    return done(std::move(r));
+  }
+  case Endpoint::kVectorTile: {
+    auto parsed = parseVectorTileRoute(w.id, target.segments, target.query,
+                                       request.header("accept-encoding"));
+    if (!parsed)
+      return done(http::errorResponse(400, parsed.error().message));
+    return tile(w, parsed.value(), request, std::move(done));
+  }
   default:
     return done(http::errorResponse(404, "no such resource under /worlds/" + w.id));
   }
@@ -203,7 +224,9 @@ void TileServer::tile(const ServedWorld& w, const TileRequest& tile, const http:
   }
   const std::string key = tileKey(tile);
   // Cesium terrain's bytes follow the Accept header (its extensions) and Accept-Encoding.
-  const char* vary = tile.kind() == TileKind::kTerrain ? "Accept, Accept-Encoding" : "";
+  const char* vary = tile.kind() == TileKind::kTerrain  ? "Accept, Accept-Encoding"
+                     : tile.kind() == TileKind::kVector ? "Accept-Encoding"
+                                                        : "";
   if (const std::string ifNoneMatch = request.header("if-none-match"); !ifNoneMatch.empty()) {
     const std::string etag = tileEtag(w.cacheKey, key);
     if (etagMatches(ifNoneMatch, etag))

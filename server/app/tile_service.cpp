@@ -4,6 +4,7 @@
 #include "heightmap_renderer.h"
 #include "mesh_renderer.h"
 #include "relief_renderer.h"
+#include "vector_tile_renderer.h"
 
 #include <string>
 
@@ -37,6 +38,9 @@ TileService::TileService(construction::WorldData world)
                                     world_.data().projectionCenter.y),
           CesiumAvailability(worldBounds(world_.data()), geographic_.maxZoom()));
   renderers_[static_cast<std::size_t>(TileKind::kRelief)] = std::make_unique<ReliefRenderer>();
+  renderers_[static_cast<std::size_t>(TileKind::kVector)] = std::make_unique<VectorTileRenderer>(
+      world_, geometry::LocalProjection(world_.data().projectionCenter.x,
+                                        world_.data().projectionCenter.y));
 }
 
 TileService::~TileService() = default;

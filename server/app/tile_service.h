@@ -60,7 +60,8 @@ private:
   tiling::TileScheme local_;
   tiling::TileScheme geographic_;
   /// The renderer of each TileKind, by its value.
-  std::array<std::unique_ptr<const TileRenderer>, 4> renderers_;
+  std::array<std::unique_ptr<const TileRenderer>, static_cast<std::size_t>(TileKind::kVector) + 1>
+      renderers_;
 };
 
 } // namespace strahler::app

@@ -68,12 +68,13 @@ constexpr const char* kAnalyzeUsage =
 
 constexpr const char* kTileUsage =
     "usage: strahler tile WORLD.world --scheme web|local|cesium --z Z --x X --y Y\n"
-    "                     --format png|terrarium|png16|tif|exr|drc|glb|relief|terrain\n"
+    "                     --format png|terrarium|png16|tif|exr|drc|glb|relief|terrain|mvt\n"
     "                     [--size N] -o FILE\n"
     "Writes one tile. web: Web Mercator XYZ (zoom 0..18); local: the world's metric\n"
     "quadtree; cesium: Cesium's geographic TMS pyramid (Y counts rows from the south),\n"
     "format terrain only: quantized-mesh-1.0 with normals, water mask and metadata.\n"
-    "png is Terrain-RGB; relief an RGB picture (height tint x hillshade).\n"
+    "png is Terrain-RGB; relief an RGB picture (height tint x hillshade);\n"
+    "mvt a Mapbox Vector Tile (web only: water, contours, rivers, features).\n"
     "N: pixels per side for rasters (16..1024, default 256),\n"
     "quads per side for meshes (4..256, default 64).\n";
 

@@ -123,6 +123,8 @@ base::Status MbtilesWriter::finish(const ArchiveMetadata& m) {
     rows.emplace_back("attribution", m.attribution);
   if (!m.encoding.empty())
     rows.emplace_back("encoding", m.encoding);
+  if (!m.vectorLayers.empty()) // MBTiles 1.3: a pbf tileset lists its layers in "json"
+    rows.emplace_back("json", "{\"vector_layers\":" + m.vectorLayers + "}");
   rows.insert(rows.end(), m.extra.begin(), m.extra.end());
   sqlite3_stmt* insert = nullptr;
   if (sqlite3_prepare_v2(db_, "INSERT INTO metadata VALUES (?, ?)", -1, &insert, nullptr) !=

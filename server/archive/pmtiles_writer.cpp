@@ -27,6 +27,8 @@ std::int32_t e7(double degrees) {
 pmtiles::TileType tileType(const std::string& format) {
   if (format == "png")
     return pmtiles::TileType::kPng;
+  if (format == "pbf")
+    return pmtiles::TileType::kMvt;
   if (format == "webp")
     return pmtiles::TileType::kWebp;
   if (format == "jpg" || format == "jpeg")
@@ -42,6 +44,8 @@ std::string metadataJson(const ArchiveMetadata& m) {
     j["attribution"] = m.attribution;
   if (!m.encoding.empty())
     j["encoding"] = m.encoding;
+  if (!m.vectorLayers.empty())
+    j["vector_layers"] = nlohmann::ordered_json::parse(m.vectorLayers);
   for (const auto& [key, value] : m.extra)
     j[key] = value;
   return j.dump();
@@ -148,7 +152,8 @@ base::Status PmtilesWriter::finish(const ArchiveMetadata& m) {
   h.tileContents = stats_.uniqueTiles;
   h.clustered = true; // contents are spooled in tile id order; repeats point backwards
   h.internalCompression = internal_;
-  h.tileCompression = pmtiles::Compression::kNone; // PNG is compressed already
+  // PNG is compressed already; vector tiles come gzipped.
+  h.tileCompression = m.gzippedTiles ? pmtiles::Compression::kGzip : pmtiles::Compression::kNone;
   h.tileType = tileType(m.tileFormat);
   h.minZoom = static_cast<std::uint8_t>(entries_.empty() ? m.minZoom : minZoom_);
   h.maxZoom = static_cast<std::uint8_t>(entries_.empty() ? m.maxZoom : maxZoom_);

@@ -27,7 +27,7 @@ struct ArchiveMetadata {
   std::string description;
   std::string attribution; ///< Empty: none.
   std::string version;     ///< Version of the tile set, e.g. "1.0.0".
-  std::string tileFormat;  ///< "png" (the only raster type strahler exports so far).
+  std::string tileFormat;  ///< "png", or "pbf" for Mapbox Vector Tiles.
   std::string encoding;    ///< raster-dem encoding ("mapbox", "terrarium"); empty if none.
   int tileSize = 256;      ///< Pixels per side.
   int minZoom = 0;
@@ -35,6 +35,11 @@ struct ArchiveMetadata {
   double west = 0.0, south = 0.0, east = 0.0, north = 0.0;
   double centerLon = 0.0, centerLat = 0.0;
   int centerZoom = 0;
+  /// Vector tiles only: the TileJSON vector_layers array as JSON text; "" for rasters.
+  std::string vectorLayers;
+  /// True when the tiles' bytes are gzipped (vector tiles, as MBTiles' pbf and PMTiles'
+  /// tile_compression 2 have them).
+  bool gzippedTiles = false;
   /// More string fields written as they are (generator, world id, seed, ...).
   std::vector<std::pair<std::string, std::string>> extra;
 };

@@ -5,12 +5,15 @@ Opens <dir>/world.mbtiles (written by `strahler export`, see write_export_archiv
 the MBTiles 1.3 metadata rows (name, format, bounds, center, minzoom, maxzoom, type, encoding),
 the `tiles` view over the deduplicated map/images tables, the TMS row flip
 (tile_row = 2^z - 1 - y), and the bytes of sampled tiles against `strahler tile` (the server's
-code path) for the same XYZ tile.
+code path) for the same XYZ tile. Then <dir>/world-vector.mbtiles (`--tile mvt`): format pbf, the
+"json" row's vector_layers, and sampled tiles that gunzip to `strahler tile --format mvt`'s bytes.
 
 Usage: check_mbtiles.py <dir> <strahler> <minzoom> <maxzoom>. Exits 1 on any mismatch.
 """
 import math
 import os
+import gzip
+import json
 import sqlite3
 import subprocess
 import sys
@@ -82,6 +85,33 @@ def main():
                     fail(f"tile {z}/{x}/{y} (TMS row {tms}) differs from strahler tile's bytes")
                 compared += 1
     print(f"OK: {compared} tiles identical to strahler tile's, {tiles} tiles, {images} distinct")
+    check_vector(folder, strahler)
+
+
+def check_vector(folder, strahler):
+    """world-vector.mbtiles: a pbf tileset of gzipped vector tiles with its layers listed."""
+    db = sqlite3.connect(f"file:{os.path.join(folder, 'world-vector.mbtiles')}?mode=ro", uri=True)
+    meta = dict(db.execute("SELECT name, value FROM metadata"))
+    if meta.get("format") != "pbf" or "json" not in meta:
+        fail(f"vector metadata: {meta}")
+    layers = {layer["id"] for layer in json.loads(meta["json"])["vector_layers"]}
+    if layers != {"water", "contours", "rivers", "features"}:
+        fail(f"vector_layers {layers}")
+    rows = db.execute("SELECT zoom_level, tile_column, tile_row, tile_data FROM tiles "
+                      "ORDER BY length(tile_data) DESC LIMIT 3").fetchall()
+    if not rows:
+        fail("no vector tiles")
+    with tempfile.TemporaryDirectory(dir=folder) as scratch:
+        for z, x, tms, data in rows:
+            y = 2 ** z - 1 - tms
+            out = os.path.join(scratch, f"{z}-{x}-{y}.mvt")
+            subprocess.run([strahler, "tile", os.path.join(folder, "world.world"), "--scheme", "web",
+                            "--z", str(z), "--x", str(x), "--y", str(y), "--format", "mvt", "-o", out],
+                           check=True, stderr=subprocess.DEVNULL)
+            with open(out, "rb") as f:
+                if gzip.decompress(bytes(data)) != f.read():
+                    fail(f"vector tile {z}/{x}/{y} does not gunzip to strahler tile's bytes")
+    print(f"OK: {len(rows)} vector tiles gunzip to strahler tile's, layers {sorted(layers)}")
 
 
 if __name__ == "__main__":

@@ -9,3 +9,6 @@ mkdir -p "$dir"
 STRAHLER_CACHE_DIR="$dir/cache" "$strahler" generate --quiet -o "$dir/world.world"
 "$strahler" export "$dir/world.world" --zooms "$minzoom-$maxzoom" --threads 2 --quiet -o "$dir/world.pmtiles"
 "$strahler" export "$dir/world.world" --zooms "$minzoom-$maxzoom" --threads 2 --quiet -o "$dir/world.mbtiles"
+# The vector tiles (gzipped MVT) of a few zooms, for the same readers.
+"$strahler" export "$dir/world.world" --zooms 8-10 --tile mvt --threads 2 --quiet -o "$dir/world-vector.pmtiles"
+"$strahler" export "$dir/world.world" --zooms 8-10 --tile mvt --threads 2 --quiet -o "$dir/world-vector.mbtiles"

@@ -5,13 +5,19 @@
 //   <dir>/meshes/<name>.drc, .glb + .json          (check_draco.mjs, validate_glb.mjs)
 //   <dir>/relief/<name>.png + .rgb + .json         (check_relief.mjs: colour relief, the .rgb
 //                                                   pixels shaded from World::height)
+//   <dir>/vector/<name>.mvt + .json                (check_mvt.mjs: the tile, and the world's
+//                                                   river lines in degrees; or, for the
+//                                                   encoder's sample, the exact content)
 #include "mesh_renderer.h"
 #include "test_worlds.h"
 #include "tile_service.h"
+#include "vector_layers.h"
 
 #include "strahler/construction/world_builder.h"
 #include "strahler/encoding/mesh.h"
+#include "strahler/render/river_sections.h"
 #include "strahler/render/shaded_relief.h"
+#include "strahler/vector_tile/vector_tile.h"
 
 #include <charconv>
 #include <cstdio>
@@ -124,6 +130,76 @@ bool relief(const app::TileService& service, const fs::path& dir, tiling::Scheme
          write(dir / (name + ".json"), json);
 }
 
+/// A vector tile and the world's river sections of the orders it shows, in degrees, at full
+/// resolution (render::forEachRiverSection's lines), for check_mvt.mjs to place the tile's
+/// rivers by its own Web Mercator.
+bool vector(const app::TileService& service, const fs::path& dir, const tiling::TileId& tile,
+            const std::string& name) {
+  auto rendered =
+      service.render({tiling::SchemeKind::kWebMercator, tile, app::TileFormat::kMvt, {}, {}});
+  if (!rendered)
+    return false;
+  const construction::WorldData& world = service.world().data();
+  const geometry::LocalProjection projection(world.projectionCenter.x, world.projectionCenter.y);
+  int maxOrder = 1;
+  render::forEachRiverSection(
+      world, [&](const render::RiverSection& s) { maxOrder = std::max(maxOrder, s.strahler); });
+  const int minOrder = app::minRiverOrder(tile.z, maxOrder);
+  std::string rivers;
+  render::forEachRiverSection(world, [&](const render::RiverSection& s) {
+    if (s.strahler < minOrder)
+      return;
+    rivers += rivers.empty() ? "[[" : ",[";
+    for (std::size_t k = 0; k < s.line.size(); ++k) {
+      const geometry::Vec2 ll = projection.inverse(s.line[k]);
+      rivers += (k ? ",[" : "[") + number(ll.x) + "," + number(ll.y) + "]";
+    }
+    rivers += "]";
+  });
+  const std::string json = "{\"z\":" + std::to_string(tile.z) + ",\"x\":" + std::to_string(tile.x) +
+                           ",\"y\":" + std::to_string(tile.y) +
+                           ",\"buffer\":" + std::to_string(app::kVectorBuffer) +
+                           ",\"features\":" + (world.features.empty() ? "false" : "true") +
+                           ",\"rivers\":" + (rivers.empty() ? "[]" : rivers + "]") + "}\n";
+  return write(dir / (name + ".mvt"), rendered.value().bytes) &&
+         write(dir / (name + ".json"), json);
+}
+
+/// A tile made by the MVT encoder directly, with every geometry type (a multipoint, two lines,
+/// a polygon with a hole), negative and buffer coordinates and every value type, and its
+/// content as JSON for check_mvt.mjs to compare with what @mapbox/vector-tile decodes.
+bool encoderSample(const fs::path& dir) {
+  using vector_tile::GeometryType;
+  const vector_tile::Tile tile{{
+      {"points",
+       4096,
+       {{GeometryType::kPoint, {{{1, 2}}, {{-30, 4100}}}, {{"name", std::string("Río")}}, 9}}},
+      {"lines",
+       4096,
+       {{GeometryType::kLineString,
+         {{{0, 0}, {4096, 4096}}, {{-64, 10}, {10, -64}, {4160, 4160}}},
+         {{"order", std::int64_t{-3}}, {"flow", 12.25}, {"index", true}},
+         0}}},
+      {"polygons",
+       4096,
+       {{GeometryType::kPolygon,
+         {{{0, 0}, {100, 0}, {100, 100}, {0, 100}}, {{10, 10}, {10, 90}, {90, 90}, {90, 10}}},
+         {{"kind", std::string("lake")}, {"big", false}},
+         0}}},
+  }};
+  const std::string json =
+      R"({"exact":{"points":[{"type":1,"id":9,"properties":{"name":"Río"},)"
+      R"("geometry":[[[1,2]],[[-30,4100]]]}],)"
+      R"("lines":[{"type":2,"properties":{"order":-3,"flow":12.25,"index":true},)"
+      R"("geometry":[[[0,0],[4096,4096]],[[-64,10],[10,-64],[4160,4160]]]}],)"
+      R"("polygons":[{"type":3,"properties":{"kind":"lake","big":false},)"
+      R"("geometry":[[[0,0],[100,0],[100,100],[0,100],[0,0]],)"
+      R"([[10,10],[10,90],[90,90],[90,10],[10,10]]]}]}})"
+      "\n";
+  return write(dir / "encoder.mvt", vector_tile::encodeTile(tile)) &&
+         write(dir / "encoder.json", json);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -136,6 +212,7 @@ int main(int argc, char** argv) {
   fs::create_directories(dir / "heightmaps");
   fs::create_directories(dir / "meshes");
   fs::create_directories(dir / "relief");
+  fs::create_directories(dir / "vector");
   const app::TileService service(
       construction::generateWorldData(test_support::defaultIslandSpec(), "samples").value());
   // Web tiles over the island's centre at a coarse and a fine zoom; local tiles inland and at the
@@ -149,7 +226,10 @@ int main(int argc, char** argv) {
              "island-z12-1736", "island-z12-1737") &&
       relief(service, dir / "relief", tiling::SchemeKind::kWebMercator, {12, 1737, 1494}, 256,
              "island-z12-1737") &&
-      relief(service, dir / "relief", tiling::SchemeKind::kLocal, {2, 1, 2}, 64, "local-z2-1-2");
+      relief(service, dir / "relief", tiling::SchemeKind::kLocal, {2, 1, 2}, 64, "local-z2-1-2") &&
+      vector(service, dir / "vector", {10, 434, 373}, "island-z10") &&
+      vector(service, dir / "vector", {12, 1736, 1494}, "island-z12") &&
+      encoderSample(dir / "vector");
   if (!ok) {
     std::fprintf(stderr, "write_world_tile_samples: could not render or write a tile\n");
     return 1;

@@ -1,13 +1,15 @@
 // libFuzzer harness: the bytes a client sends on one connection, handled as
 // server/http/src/session.cpp handles them: Beast's header parser with the server's limits, the
 // protocol rules (checkRequest / checkParseError), the response as written (toWireResponse,
-// appendHead), and for forwarded requests the router's parsers (parseTarget, parseTileRoute)
+// appendHead), and for forwarded requests the router's parsers (parseTarget, parseTileRoute,
+// parseVectorTileRoute)
 // with JSON error answers quoting the client's bytes. Pipelined requests are followed while the
 // connection would stay open. (The tile server itself needs a world and the terrain code:
 // tests/app covers its dispatch.)
 #include "request_rules.h"
 #include "route_parser.h"
 #include "tile_route.h"
+#include "vector_route.h"
 #include "wire_response.h"
 
 #include <boost/asio/buffer.hpp>
@@ -45,7 +47,10 @@ bool route(const strahler::http::Request& request, unsigned version, bool keepAl
     response = strahler::http::errorResponse(400, parsed.error().message);
     response.close = true;
   } else if (const auto& s = parsed.value().segments; s.size() == 6 && s[0] == "worlds") {
-    const auto tile = strahler::app::parseTileRoute(s[1], s, parsed.value().query);
+    const auto tile = s[2] == "vector"
+                          ? strahler::app::parseVectorTileRoute(s[1], s, parsed.value().query,
+                                                                request.header("accept-encoding"))
+                          : strahler::app::parseTileRoute(s[1], s, parsed.value().query);
     if (!tile) {
       response = strahler::http::errorResponse(400, tile.error().message);
       response.close = true;

@@ -1,7 +1,8 @@
 #include "strahler/render/rivers_geojson.h"
 
 #include "strahler/geometry/polyline_simplify.h"
-#include "strahler/primitives/river_primitives.h"
+#include "strahler/primitives/river_primitive.h"
+#include "strahler/render/river_sections.h"
 
 #include <charconv>
 #include <cmath>
@@ -11,9 +12,6 @@
 
 namespace strahler::render {
 namespace {
-
-using primitives::RiverPrimitive;
-using primitives::RiverType;
 
 double round6(double v) {
   return std::round(v * 1e6) / 1e6;
@@ -69,110 +67,36 @@ private:
   std::string& out_;
 };
 
-/// The river primitive of each node's downstream section (null for mouths).
-std::vector<const RiverPrimitive*> primitiveOfNode(const construction::WorldData& world) {
-  std::vector<const RiverPrimitive*> byNode(world.network.nodes.size(), nullptr);
-  for (const RiverPrimitive& r : world.rivers)
-    if (r.node.valid() && r.node.index() < byNode.size())
-      byNode[r.node.index()] = &r;
-  return byNode;
-}
-
-/// True when the edge below node i simply continues the edge below its only child.
-bool continuesChild(const network::RiverNetwork& network, const std::vector<RiverType>& types,
-                    std::size_t i) {
-  const network::RiverNode& node = network.nodes[i];
-  if (node.children.size() != 1)
-    return false;
-  const std::size_t c = node.children.front().index();
-  return network.nodes[c].strahler == node.strahler && types[c] == types[i];
-}
-
-/// Appends the line of the edge below node i: its primitive's curve, else the straight edge.
-/// The first point (the node, already the end of the previous edge) is left out.
-void appendEdge(const network::RiverNetwork& network, const RiverPrimitive* river, std::size_t i,
-                std::vector<geometry::Vec2>& line) {
-  const geometry::Vec2 down = network.nodes[network.nodes[i].parent.index()].position;
-  if (river == nullptr || river->curve.size() < 2) {
-    line.push_back(down);
-    return;
-  }
-  for (std::size_t k = 1; k < river->curve.size(); ++k)
-    line.push_back(river->curve[k].position);
-}
-
-class SectionWriter {
-public:
-  SectionWriter(const construction::WorldData& world, const geometry::LocalProjection& projection)
-      : world_(world), net_(world.network), projection_(projection),
-        byNode_(primitiveOfNode(world)) {}
-
-  /// Appends the Feature of the section whose first edge is below node `head`.
-  void section(std::size_t head, JsonWriter& out) {
-    line_.assign(1, net_.nodes[head].position);
-    std::size_t cur = head;
-    std::size_t lastUpstream = head; // upstream node of the section's last edge: its flow
-    for (;;) {
-      lastUpstream = cur;
-      appendEdge(net_, byNode_[cur], cur, line_);
-      cur = net_.nodes[cur].parent.index();
-      if (!net_.nodes[cur].parent.valid() || !continuesChild(net_, world_.riverTypes, cur))
-        break;
-    }
-    out.raw("{\"geometry\":{\"coordinates\":[");
-    bool first = true;
-    for (std::size_t k : geometry::simplifyPolyline(line_, kRiverLineTolerance)) {
-      if (!std::exchange(first, false))
-        out.raw(",");
-      out.lonLat(projection_, line_[k]);
-    }
-    const network::RiverNode& top = net_.nodes[head];
-    out.raw("],\"type\":\"LineString\"},\"properties\":{");
-    out.key("elevationDown").number(round2(net_.nodes[cur].elevation));
-    out.raw(",").key("elevationUp").number(round2(top.elevation));
-    out.raw(",").key("flow").number(round2(world_.flow[lastUpstream]));
-    out.raw(",").key("rosgen").plain(primitives::riverTypeName(world_.riverTypes[head]));
-    out.raw(",").key("strahler").integer(top.strahler);
-    out.raw(",").key("tree").integer(top.tree);
-    out.raw(",").key("widthDownM").number(round2(widthDown(lastUpstream)));
-    out.raw(",").key("widthUpM").number(round2(widthUp(head)));
-    out.raw("},\"type\":\"Feature\"}");
-  }
-
-private:
-  double widthUp(std::size_t i) const {
-    const RiverPrimitive* r = byNode_[i];
-    return r ? r->widthUp : primitives::channelWidth(world_.flow[i]);
-  }
-  double widthDown(std::size_t i) const {
-    const RiverPrimitive* r = byNode_[i];
-    return r ? r->widthDown : primitives::channelWidth(world_.flow[net_.nodes[i].parent.index()]);
-  }
-
-  const construction::WorldData& world_;
-  const network::RiverNetwork& net_;
-  const geometry::LocalProjection& projection_;
-  std::vector<const RiverPrimitive*> byNode_;
-  std::vector<geometry::Vec2> line_; // the section being written
-};
-
 } // namespace
 
 std::string riversGeoJson(const construction::WorldData& world,
                           const geometry::LocalProjection& projection) {
   const network::RiverNetwork& network = world.network;
-  SectionWriter writer(world, projection);
   std::string text;
   JsonWriter out(text);
   out.raw("{\"features\":[");
   bool first = true;
-  for (std::size_t i = 0; i < network.nodes.size(); ++i) {
-    if (!network.nodes[i].parent.valid() || continuesChild(network, world.riverTypes, i))
-      continue;
+  forEachRiverSection(world, [&](const RiverSection& s) {
     if (!std::exchange(first, false))
       out.raw(",");
-    writer.section(i, out);
-  }
+    out.raw("{\"geometry\":{\"coordinates\":[");
+    bool firstPoint = true;
+    for (std::size_t k : geometry::simplifyPolyline(s.line, kRiverLineTolerance)) {
+      if (!std::exchange(firstPoint, false))
+        out.raw(",");
+      out.lonLat(projection, s.line[k]);
+    }
+    out.raw("],\"type\":\"LineString\"},\"properties\":{");
+    out.key("elevationDown").number(round2(s.elevationDown));
+    out.raw(",").key("elevationUp").number(round2(s.elevationUp));
+    out.raw(",").key("flow").number(round2(s.flow));
+    out.raw(",").key("rosgen").plain(primitives::riverTypeName(s.rosgen));
+    out.raw(",").key("strahler").integer(s.strahler);
+    out.raw(",").key("tree").integer(s.tree);
+    out.raw(",").key("widthDownM").number(round2(s.widthDown));
+    out.raw(",").key("widthUpM").number(round2(s.widthUp));
+    out.raw("},\"type\":\"Feature\"}");
+  });
   for (const network::Mouth& m : network.mouths) {
     const network::RiverNode& node = network.node(m.node);
     if (!std::exchange(first, false))
