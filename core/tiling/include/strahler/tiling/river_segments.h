@@ -1,0 +1,29 @@
+#pragma once
+
+#include "strahler/construction/world.h"
+#include "strahler/geometry/aabb.h"
+#include "strahler/geometry/vec2.h"
+
+#include <functional>
+
+namespace strahler::tiling {
+
+/// One straight piece of a river's channel, local metres.
+struct RiverSegment {
+  geometry::Vec2 a;       ///< Upstream end.
+  geometry::Vec2 b;       ///< Downstream end.
+  double halfWidth = 0.0; ///< Half the channel width at the segment's middle, m.
+};
+
+/// Calls `visit` for every segment of `world`'s rivers at least `minWidth` wide (the width
+/// varies linearly along a curve with the distance travelled) that comes within `margin` m of
+/// the channel's edge to `box` (local metres). The one walk over river channels of the water
+/// mask and the humidity layer.
+void forEachRiverSegment(const construction::World& world, const geometry::Aabb& box,
+                         double minWidth, double margin,
+                         const std::function<void(const RiverSegment&)>& visit);
+
+/// Distance² from p to the segment [a, b].
+double distance2ToSegment(geometry::Vec2 p, geometry::Vec2 a, geometry::Vec2 b) noexcept;
+
+} // namespace strahler::tiling
