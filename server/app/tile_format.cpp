@@ -1,5 +1,7 @@
 #include "tile_format.h"
 
+#include <iterator>
+
 namespace strahler::app {
 
 base::Result<TileFormat> parseTileFormat(const std::string& name) {
@@ -27,6 +29,17 @@ base::Result<TileFormat> parseTileFormat(const std::string& name) {
           "' (use png, terrarium, png16, tif, exr, drc, glb, relief or terrain)");
 }
 
+base::Result<LayerName> parseLayerName(const std::string& name) {
+  for (std::size_t i = 0; i < std::size(kLayerNames); ++i)
+    if (name == kLayerNames[i])
+      return static_cast<LayerName>(i);
+  std::string known;
+  for (const char* n : kLayerNames)
+    known += (known.empty() ? "" : ", ") + std::string(n);
+  return base::makeError(base::ErrorCode::kNotFound,
+                         "unknown layer '" + name.substr(0, 64) + "' (layers: " + known + ")");
+}
+
 const char* canonicalFormatName(TileFormat format) noexcept {
   switch (format) {
   case TileFormat::kTerrainRgb:
@@ -47,6 +60,8 @@ const char* canonicalFormatName(TileFormat format) noexcept {
     return "terrain";
   case TileFormat::kRelief:
     return "relief";
+  case TileFormat::kLayerPng:
+    return "layer";
   }
   return "png";
 }
@@ -56,6 +71,8 @@ TileKind tileKind(TileFormat format) noexcept {
     return TileKind::kTerrain;
   if (format == TileFormat::kRelief)
     return TileKind::kRelief;
+  if (format == TileFormat::kLayerPng)
+    return TileKind::kLayer;
   return format == TileFormat::kDraco || format == TileFormat::kGlb ? TileKind::kMesh
                                                                     : TileKind::kHeightmap;
 }

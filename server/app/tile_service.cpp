@@ -2,6 +2,7 @@
 
 #include "cesium_terrain_renderer.h"
 #include "heightmap_renderer.h"
+#include "layer_renderer.h"
 #include "mesh_renderer.h"
 #include "relief_renderer.h"
 
@@ -37,6 +38,7 @@ TileService::TileService(construction::WorldData world)
                                     world_.data().projectionCenter.y),
           CesiumAvailability(worldBounds(world_.data()), geographic_.maxZoom()));
   renderers_[static_cast<std::size_t>(TileKind::kRelief)] = std::make_unique<ReliefRenderer>();
+  renderers_[static_cast<std::size_t>(TileKind::kLayer)] = std::make_unique<LayerRenderer>(world_);
 }
 
 TileService::~TileService() = default;
@@ -46,6 +48,9 @@ base::Status TileService::checkTile(const TileRequest& request) const {
     return base::makeError(base::ErrorCode::kInvalidInput,
                            "Cesium terrain tiles (.terrain) are served in the geographic pyramid "
                            "only, and only they are");
+  if (request.kind() == TileKind::kLayer && request.scheme == tiling::SchemeKind::kGeographic)
+    return base::makeError(base::ErrorCode::kInvalidInput,
+                           "layer tiles are served in the Web Mercator and local pyramids");
   const tiling::TileScheme& s = scheme(request.scheme);
   const tiling::TileId& t = request.tile;
   if (!s.contains(t))

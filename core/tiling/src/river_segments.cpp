@@ -16,6 +16,36 @@ double distance2ToSegment(Vec2 p, Vec2 a, Vec2 b) noexcept {
   return d.x * d.x + d.y * d.y;
 }
 
+GridRows::GridRows(const SampleGrid& grid) : grid_(grid) {
+  const auto w = static_cast<std::size_t>(grid.width);
+  rowY_.resize(static_cast<std::size_t>(grid.height));
+  for (std::size_t j = 0; j < rowY_.size(); ++j) {
+    rowY_[j] = {grid.points[j * w].y, grid.points[j * w].y};
+    for (std::size_t i = 0; i < w; ++i) {
+      rowY_[j].first = std::min(rowY_[j].first, grid.points[j * w + i].y);
+      rowY_[j].second = std::max(rowY_[j].second, grid.points[j * w + i].y);
+    }
+  }
+}
+
+void GridRows::forEachIn(const Aabb& box, const std::function<void(std::size_t)>& visit) const {
+  const auto w = static_cast<std::size_t>(grid_.width);
+  for (std::size_t j = 0; j < rowY_.size(); ++j) {
+    if (rowY_[j].second < box.min.y || rowY_[j].first > box.max.y)
+      continue;
+    const auto row = grid_.points.begin() + static_cast<std::ptrdiff_t>(j * w);
+    const auto first = std::lower_bound(row, row + static_cast<std::ptrdiff_t>(w), box.min.x,
+                                        [](Vec2 p, double x) { return p.x < x; });
+    for (auto i = static_cast<std::size_t>(first - row); i < w; ++i) {
+      const Vec2 p = grid_.points[j * w + i];
+      if (p.x > box.max.x)
+        break;
+      if (p.y >= box.min.y && p.y <= box.max.y)
+        visit(j * w + i);
+    }
+  }
+}
+
 void forEachRiverSegment(const construction::World& world, const Aabb& box, double minWidth,
                          double margin, const std::function<void(const RiverSegment&)>& visit) {
   const auto& rivers = world.data().rivers;

@@ -74,42 +74,27 @@ std::vector<std::uint8_t> WaterMask::of(const Aabb& lonLat) const {
   return mask;
 }
 
-std::vector<std::uint8_t> WaterMask::ofGrid(const SampleGrid& grid, double cellMetres) const {
+std::vector<std::uint8_t> WaterMask::ofGrid(const SampleGrid& grid) const {
   const auto count = static_cast<std::size_t>(grid.width) * static_cast<std::size_t>(grid.height);
+  const double finest = *std::min_element(grid.rowSpacing.begin(), grid.rowSpacing.end());
   const Aabb outline =
       grid.bounds.expanded(0.01 * std::max(grid.bounds.size().x, grid.bounds.size().y));
-  if (const auto all = uniform(outline, cellMetres))
+  if (const auto all = uniform(outline, finest))
     return std::vector<std::uint8_t>(count, *all);
   std::vector<std::uint8_t> mask(count, 0);
   addSeaAndLakes(grid.points, grid.width, grid.height, mask);
-  // The rows' extents in y, to visit only the rows a segment may cover; in a row, points run
-  // west to east (both raster pyramids), so a binary search finds the columns.
-  const auto w = static_cast<std::size_t>(grid.width);
-  std::vector<std::pair<double, double>> rowY(static_cast<std::size_t>(grid.height));
-  for (std::size_t j = 0; j < rowY.size(); ++j) {
-    rowY[j] = {grid.points[j * w].y, grid.points[j * w].y};
-    for (std::size_t i = 0; i < w; ++i) {
-      rowY[j].first = std::min(rowY[j].first, grid.points[j * w + i].y);
-      rowY[j].second = std::max(rowY[j].second, grid.points[j * w + i].y);
-    }
-  }
-  forEachRiverSegment(world_, grid.bounds, cellMetres, 0.0, [&](const RiverSegment& s) {
+  const GridRows rows(grid);
+  const auto width = static_cast<std::size_t>(grid.width);
+  forEachRiverSegment(world_, grid.bounds, finest, 0.0, [&](const RiverSegment& s) {
     Aabb box;
     box.add(s.a);
     box.add(s.b);
-    box = box.expanded(s.halfWidth);
-    for (std::size_t j = 0; j < rowY.size(); ++j) {
-      if (rowY[j].second < box.min.y || rowY[j].first > box.max.y)
-        continue;
-      const auto row = grid.points.begin() + static_cast<std::ptrdiff_t>(j * w);
-      auto i = static_cast<std::size_t>(std::lower_bound(row, row + static_cast<std::ptrdiff_t>(w),
-                                                         box.min.x,
-                                                         [](Vec2 p, double x) { return p.x < x; }) -
-                                        row);
-      for (; i < w && grid.points[j * w + i].x <= box.max.x; ++i)
-        if (distance2ToSegment(grid.points[j * w + i], s.a, s.b) <= s.halfWidth * s.halfWidth)
-          mask[j * w + i] = kWater;
-    }
+    rows.forEachIn(box.expanded(s.halfWidth), [&](std::size_t k) {
+      // Per sample, by its own row's spacing, so that neighbouring tiles agree.
+      if (2.0 * s.halfWidth >= grid.rowSpacing[k / width] &&
+          distance2ToSegment(grid.points[k], s.a, s.b) <= s.halfWidth * s.halfWidth)
+        mask[k] = kWater;
+    });
   });
   return mask;
 }

@@ -3,8 +3,12 @@
 #include "strahler/construction/world.h"
 #include "strahler/geometry/aabb.h"
 #include "strahler/geometry/vec2.h"
+#include "strahler/tiling/tile_scheme.h"
 
+#include <cstddef>
 #include <functional>
+#include <utility>
+#include <vector>
 
 namespace strahler::tiling {
 
@@ -22,6 +26,20 @@ struct RiverSegment {
 void forEachRiverSegment(const construction::World& world, const geometry::Aabb& box,
                          double minWidth, double margin,
                          const std::function<void(const RiverSegment&)>& visit);
+
+/// The samples of a raster grid (rows of points running west to east, as both raster pyramids
+/// lay them) found by local box: the rows by their extent in y, the columns by binary search.
+class GridRows {
+public:
+  /// An index over `grid` (which must outlive it).
+  explicit GridRows(const SampleGrid& grid);
+  /// Calls `visit` with the index of every sample of the grid inside `box`.
+  void forEachIn(const geometry::Aabb& box, const std::function<void(std::size_t)>& visit) const;
+
+private:
+  const SampleGrid& grid_;
+  std::vector<std::pair<double, double>> rowY_; ///< Per row: its least and greatest y.
+};
 
 /// Distance² from p to the segment [a, b].
 double distance2ToSegment(geometry::Vec2 p, geometry::Vec2 a, geometry::Vec2 b) noexcept;

@@ -28,8 +28,9 @@ public:
   /// its cell's centre.
   std::vector<std::uint8_t> of(const geometry::Aabb& lonLat) const;
   /// The mask at the samples of `grid` (a raster grid: rows of points running west to east):
-  /// grid.width · grid.height bytes, 0 or kWater, with the rivers at least `cellMetres` wide.
-  std::vector<std::uint8_t> ofGrid(const SampleGrid& grid, double cellMetres) const;
+  /// grid.width · grid.height bytes, 0 or kWater, with the rivers at least as wide as the
+  /// sample's row spacing. A function of each sample alone: grids sharing samples agree.
+  std::vector<std::uint8_t> ofGrid(const SampleGrid& grid) const;
 
 private:
   /// kWater or 0 when the local box `outline` is all water or all land (no shore near, no

@@ -1,0 +1,66 @@
+#include "strahler/layers/humidity.h"
+
+#include "strahler/base/assert.h"
+#include "strahler/tiling/river_segments.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace strahler::layers {
+
+std::vector<double> riverWetness(const construction::World& world, const tiling::SampleGrid& grid) {
+  std::vector<double> wet(grid.points.size(), 0.0);
+  // A river counts at a sample when its wetness reaches half the row spacing (3R ≥ s / 2):
+  // R ≥ s / 6 needs a width ≥ (s / 6 − base) / per.
+  const auto widthFor = [](double spacing) {
+    return std::max(0.0, (spacing / 6.0 - Humidity::kReachBaseM) / Humidity::kReachPerWidth);
+  };
+  const double minWidth =
+      widthFor(*std::min_element(grid.rowSpacing.begin(), grid.rowSpacing.end()));
+  const auto width = static_cast<std::size_t>(grid.width);
+  const tiling::GridRows rows(grid);
+  tiling::forEachRiverSegment(
+      world, grid.bounds, minWidth, 3.0 * Humidity::kMaxReachM, [&](const tiling::RiverSegment& s) {
+        const double reach =
+            std::min(Humidity::kMaxReachM,
+                     Humidity::kReachBaseM + Humidity::kReachPerWidth * 2.0 * s.halfWidth);
+        geometry::Aabb box;
+        box.add(s.a);
+        box.add(s.b);
+        rows.forEachIn(box.expanded(s.halfWidth + 3.0 * reach), [&](std::size_t k) {
+          if (2.0 * s.halfWidth < widthFor(grid.rowSpacing[k / width]))
+            return;
+          const double d = std::sqrt(tiling::distance2ToSegment(grid.points[k], s.a, s.b));
+          const double edge = std::max(0.0, d - s.halfWidth);
+          if (edge < 3.0 * reach)
+            wet[k] = std::max(wet[k], std::exp(-edge / reach));
+        });
+      });
+  return wet;
+}
+
+std::vector<double> humidity(const BorderedHeights& grid, std::span<const double> wetness) {
+  grid.check();
+  STRAHLER_ASSERT(wetness.size() == grid.heights.size(), "humidity: one wetness per sample");
+  const double tanDry = std::tan(Humidity::kDrySlopeDeg * std::numbers::pi / 180.0);
+  std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(grid.width) * static_cast<std::size_t>(grid.height));
+  for (int y = 0; y < grid.height; ++y)
+    for (int x = 0; x < grid.width; ++x) {
+      if (grid.at(x, y) < 0.0) {
+        out.push_back(1.0);
+        continue;
+      }
+      const Gradient g = gradientAt(grid, x, y);
+      const double flat = std::max(0.0, 1.0 - std::hypot(g.dzdx, g.dzdy) / tanDry);
+      const double hollow =
+          std::clamp(0.5 + concavityAt(grid, x, y) / (2.0 * Humidity::kConcavityScale), 0.0, 1.0);
+      const double river = wetness[static_cast<std::size_t>(y + grid.border) * grid.stride() +
+                                   static_cast<std::size_t>(x + grid.border)];
+      out.push_back(std::max(river, Humidity::kLocalWeight * flat * hollow));
+    }
+  return out;
+}
+
+} // namespace strahler::layers
