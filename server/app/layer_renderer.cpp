@@ -18,10 +18,16 @@
 namespace strahler::app {
 namespace {
 
+/// The sky view's step for a tile of `size`: 2 (a quarter of the rays, interpolated) where the
+/// tiles' pixel (0, 0) has even global indices, which an even size guarantees.
+int skyStep(int size) noexcept {
+  return size % 2 == 0 ? 2 : 1;
+}
+
 /// The samples a layer needs beyond the tile on each side.
-int borderOf(LayerName name) noexcept {
+int borderOf(LayerName name, int size) noexcept {
   return name == LayerName::kIllumination || name == LayerName::kVegetation
-             ? layers::SkyView::kReach
+             ? layers::SkyView::kReach + skyStep(size) - 1
              : 1;
 }
 
@@ -76,7 +82,7 @@ base::Result<RenderedTile> LayerRenderer::render(const RenderContext& context,
     return base::makeError(base::ErrorCode::kInvalidInput,
                            "layer tiles are served in the Web Mercator and local pyramids");
   const LayerOptions& layer = request.options.layer;
-  const int border = borderOf(layer.name);
+  const int border = borderOf(layer.name, size);
   RenderedTile out;
   const tiling::SampleGrid grid = context.scheme.borderedRasterGrid(request.tile, size, border);
   const std::vector<double> heights = evaluateGrid(context, grid, out);
@@ -91,7 +97,7 @@ base::Result<RenderedTile> LayerRenderer::render(const RenderContext& context,
     bytes = grey16Hundredths(layers::aspectDegrees(h), size, 65535);
     break;
   case LayerName::kIllumination:
-    bytes = grey8(layers::skyView(h), 255.0, size);
+    bytes = grey8(layers::skyView(h, skyStep(size)), 255.0, size);
     break;
   case LayerName::kHillshade: {
     std::vector<double> shade;
@@ -116,7 +122,7 @@ base::Result<RenderedTile> LayerRenderer::render(const RenderContext& context,
     const std::vector<std::uint8_t> water = insideOf(water_.ofGrid(grid), size, border);
     bytes = grey8(layers::vegetationDensity(
                       layers::kSpecies[static_cast<std::size_t>(layer.species)],
-                      layers::sedimentThickness(h), layers::skyView(h), humidity, water),
+                      layers::sedimentThickness(h), layers::skyView(h, skyStep(size)), humidity, water),
                   255.0, size);
     break;
   }

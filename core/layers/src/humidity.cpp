@@ -10,7 +10,9 @@
 namespace strahler::layers {
 
 std::vector<double> riverWetness(const construction::World& world, const tiling::SampleGrid& grid) {
-  std::vector<double> wet(grid.points.size(), 0.0);
+  // The least distance-to-reach ratio per sample (exp is monotonic: one exp per sample).
+  constexpr double kBeyond = 3.0;
+  std::vector<double> ratio(grid.points.size(), kBeyond);
   // A river counts at a sample when its wetness reaches half the row spacing (3R ≥ s / 2):
   // R ≥ s / 6 needs a width ≥ (s / 6 − base) / per.
   const auto widthFor = [](double spacing) {
@@ -21,22 +23,26 @@ std::vector<double> riverWetness(const construction::World& world, const tiling:
   const auto width = static_cast<std::size_t>(grid.width);
   const tiling::GridRows rows(grid);
   tiling::forEachRiverSegment(
-      world, grid.bounds, minWidth, 3.0 * Humidity::kMaxReachM, [&](const tiling::RiverSegment& s) {
+      world, grid.bounds, minWidth, kBeyond * Humidity::kMaxReachM, [&](const tiling::RiverSegment& s) {
         const double reach =
             std::min(Humidity::kMaxReachM,
                      Humidity::kReachBaseM + Humidity::kReachPerWidth * 2.0 * s.halfWidth);
         geometry::Aabb box;
         box.add(s.a);
         box.add(s.b);
-        rows.forEachIn(box.expanded(s.halfWidth + 3.0 * reach), [&](std::size_t k) {
-          if (2.0 * s.halfWidth < widthFor(grid.rowSpacing[k / width]))
+        const double far = s.halfWidth + kBeyond * reach;
+        rows.forEachIn(box.expanded(far), [&](std::size_t k) {
+          const double d2 = tiling::distance2ToSegment(grid.points[k], s.a, s.b);
+          if (d2 >= far * far || 2.0 * s.halfWidth < widthFor(grid.rowSpacing[k / width]))
             return;
-          const double d = std::sqrt(tiling::distance2ToSegment(grid.points[k], s.a, s.b));
-          const double edge = std::max(0.0, d - s.halfWidth);
-          if (edge < 3.0 * reach)
-            wet[k] = std::max(wet[k], std::exp(-edge / reach));
+          const double edge = std::max(0.0, std::sqrt(d2) - s.halfWidth);
+          ratio[k] = std::min(ratio[k], edge / reach);
         });
       });
+  std::vector<double> wet(ratio.size(), 0.0);
+  for (std::size_t k = 0; k < ratio.size(); ++k)
+    if (ratio[k] < kBeyond)
+      wet[k] = std::exp(-ratio[k]);
   return wet;
 }
 

@@ -34,27 +34,65 @@ std::array<Ray, SkyView::kRays> makeRays() {
   return rays;
 }
 
+/// The sky-view factor at pixels (x0 + step·i, y) for i < count.
+void skyRow(const BorderedHeights& grid, int y, int x0, int step, std::size_t count,
+            double* out) {
+  static const std::array<Ray, SkyView::kRays> rays = makeRays();
+  thread_local std::vector<double> steepest, sum;
+  steepest.assign(count, 0.0);
+  sum.assign(count, 0.0);
+  const double spacing = grid.spacing(y);
+  const auto stride = static_cast<std::ptrdiff_t>(grid.stride());
+  const double* here = &grid.heights[static_cast<std::size_t>(y + grid.border) * grid.stride() +
+                                     static_cast<std::size_t>(x0 + grid.border)];
+  for (const Ray& ray : rays) {
+    std::fill(steepest.begin(), steepest.end(), 0.0); // tan of the horizon; 0: clear
+    for (std::size_t k = 0; k < kStepCount; ++k) {
+      const double inverse = 1.0 / (ray.distance[k] * spacing);
+      const double* there = here + ray.dy[k] * stride + ray.dx[k];
+      for (std::size_t i = 0; i < count; ++i) {
+        const auto x = static_cast<std::ptrdiff_t>(i) * step;
+        steepest[i] = std::max(steepest[i], (there[x] - here[x]) * inverse);
+      }
+    }
+    for (std::size_t i = 0; i < count; ++i) // sin(atan(t))
+      sum[i] += steepest[i] / std::sqrt(1.0 + steepest[i] * steepest[i]);
+  }
+  for (std::size_t i = 0; i < count; ++i)
+    out[i] = 1.0 - sum[i] / SkyView::kRays;
+}
+
 } // namespace
 
-std::vector<double> skyView(const BorderedHeights& grid) {
+std::vector<double> skyView(const BorderedHeights& grid, int step) {
   grid.check();
-  STRAHLER_ASSERT(grid.border >= SkyView::kReach, "skyView: the border is shorter than a ray");
-  static const std::array<Ray, SkyView::kRays> rays = makeRays();
-  std::vector<double> out;
-  out.reserve(static_cast<std::size_t>(grid.width) * static_cast<std::size_t>(grid.height));
-  for (int y = 0; y < grid.height; ++y) {
-    const double spacing = grid.spacing(y);
-    for (int x = 0; x < grid.width; ++x) {
-      const double h = grid.at(x, y);
-      double sum = 0.0;
-      for (const Ray& ray : rays) {
-        double steepest = 0.0; // tan of the horizon's elevation, 0 for a clear horizon
-        for (std::size_t k = 0; k < kStepCount; ++k)
-          steepest = std::max(steepest, (grid.at(x + ray.dx[k], y + ray.dy[k]) - h) /
-                                            (ray.distance[k] * spacing));
-        sum += steepest / std::sqrt(1.0 + steepest * steepest); // sin(atan(t))
-      }
-      out.push_back(1.0 - sum / SkyView::kRays);
+  STRAHLER_ASSERT(step == 1 || (step == 2 && grid.width % 2 == 0 && grid.height % 2 == 0),
+                  "skyView: step 1, or 2 on an even raster");
+  STRAHLER_ASSERT(grid.border >= SkyView::kReach + step - 1,
+                  "skyView: the border is shorter than a ray");
+  const auto width = static_cast<std::size_t>(grid.width);
+  std::vector<double> out(width * static_cast<std::size_t>(grid.height));
+  if (step == 1) {
+    for (int y = 0; y < grid.height; ++y)
+      skyRow(grid, y, 0, 1, width, &out[static_cast<std::size_t>(y) * width]);
+    return out;
+  }
+  // Every other pixel of every other row, the last in the border (the next tile's first),
+  // then bilinear between them: the same global samples whichever tile asks.
+  const std::size_t cw = width / 2 + 1, ch = static_cast<std::size_t>(grid.height) / 2 + 1;
+  std::vector<double> coarse(cw * ch);
+  for (std::size_t j = 0; j < ch; ++j)
+    skyRow(grid, static_cast<int>(2 * j), 0, 2, cw, &coarse[j * cw]);
+  for (std::size_t y = 0; y < static_cast<std::size_t>(grid.height); ++y) {
+    const std::size_t j = y / 2;
+    const double ty = y % 2 == 1 ? 0.5 : 0.0;
+    for (std::size_t x = 0; x < width; ++x) {
+      const std::size_t i = x / 2;
+      const double tx = x % 2 == 1 ? 0.5 : 0.0;
+      const double* a = &coarse[j * cw + i];
+      const double top = a[0] + tx * (a[1] - a[0]);
+      const double bottom = a[cw] + tx * (a[cw + 1] - a[cw]);
+      out[y * width + x] = ty == 0.0 ? top : top + ty * (bottom - top);
     }
   }
   return out;

@@ -28,22 +28,11 @@ GridRows::GridRows(const SampleGrid& grid) : grid_(grid) {
   }
 }
 
-void GridRows::forEachIn(const Aabb& box, const std::function<void(std::size_t)>& visit) const {
-  const auto w = static_cast<std::size_t>(grid_.width);
-  for (std::size_t j = 0; j < rowY_.size(); ++j) {
-    if (rowY_[j].second < box.min.y || rowY_[j].first > box.max.y)
-      continue;
-    const auto row = grid_.points.begin() + static_cast<std::ptrdiff_t>(j * w);
-    const auto first = std::lower_bound(row, row + static_cast<std::ptrdiff_t>(w), box.min.x,
-                                        [](Vec2 p, double x) { return p.x < x; });
-    for (auto i = static_cast<std::size_t>(first - row); i < w; ++i) {
-      const Vec2 p = grid_.points[j * w + i];
-      if (p.x > box.max.x)
-        break;
-      if (p.y >= box.min.y && p.y <= box.max.y)
-        visit(j * w + i);
-    }
-  }
+std::size_t GridRows::firstAtLeast(std::size_t j, double x) const {
+  const auto w = static_cast<std::ptrdiff_t>(grid_.width);
+  const auto row = grid_.points.begin() + static_cast<std::ptrdiff_t>(j) * w;
+  return static_cast<std::size_t>(
+      std::lower_bound(row, row + w, x, [](Vec2 p, double v) { return p.x < v; }) - row);
 }
 
 void forEachRiverSegment(const construction::World& world, const Aabb& box, double minWidth,

@@ -34,9 +34,25 @@ public:
   /// An index over `grid` (which must outlive it).
   explicit GridRows(const SampleGrid& grid);
   /// Calls `visit` with the index of every sample of the grid inside `box`.
-  void forEachIn(const geometry::Aabb& box, const std::function<void(std::size_t)>& visit) const;
+  template <class Visit> void forEachIn(const geometry::Aabb& box, Visit&& visit) const {
+    const auto w = static_cast<std::size_t>(grid_.width);
+    for (std::size_t j = 0; j < rowY_.size(); ++j) {
+      if (rowY_[j].second < box.min.y || rowY_[j].first > box.max.y)
+        continue;
+      for (std::size_t i = firstAtLeast(j, box.min.x); i < w; ++i) {
+        const geometry::Vec2 p = grid_.points[j * w + i];
+        if (p.x > box.max.x)
+          break;
+        if (p.y >= box.min.y && p.y <= box.max.y)
+          visit(j * w + i);
+      }
+    }
+  }
 
 private:
+  /// The first column of row j whose x is at least `x`.
+  std::size_t firstAtLeast(std::size_t j, double x) const;
+
   const SampleGrid& grid_;
   std::vector<std::pair<double, double>> rowY_; ///< Per row: its least and greatest y.
 };
