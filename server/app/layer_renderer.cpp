@@ -120,10 +120,11 @@ base::Result<RenderedTile> LayerRenderer::render(const RenderContext& context,
   case LayerName::kVegetation: {
     const std::vector<double> humidity = layers::humidity(h, layers::riverWetness(world_, grid));
     const std::vector<std::uint8_t> water = insideOf(water_.ofGrid(grid), size, border);
-    bytes = grey8(layers::vegetationDensity(
-                      layers::kSpecies[static_cast<std::size_t>(layer.species)],
-                      layers::sedimentThickness(h), layers::skyView(h, skyStep(size)), humidity, water),
-                  255.0, size);
+    bytes =
+        grey8(layers::vegetationDensity(layers::kSpecies[static_cast<std::size_t>(layer.species)],
+                                        layers::sedimentThickness(h),
+                                        layers::skyView(h, skyStep(size)), humidity, water),
+              255.0, size);
     break;
   }
   case LayerName::kWater:

@@ -88,14 +88,30 @@ void BM_HeightmapTile(benchmark::State& state) {
     benchmark::DoNotOptimize(service().render(r));
 }
 
-void BM_Slope(benchmark::State& s) { layerTile(s, app::LayerName::kSlope); }
-void BM_Aspect(benchmark::State& s) { layerTile(s, app::LayerName::kAspect); }
-void BM_Illumination(benchmark::State& s) { layerTile(s, app::LayerName::kIllumination); }
-void BM_Hillshade(benchmark::State& s) { layerTile(s, app::LayerName::kHillshade); }
-void BM_Humidity(benchmark::State& s) { layerTile(s, app::LayerName::kHumidity); }
-void BM_Sediment(benchmark::State& s) { layerTile(s, app::LayerName::kSediment); }
-void BM_Vegetation(benchmark::State& s) { layerTile(s, app::LayerName::kVegetation); }
-void BM_Water(benchmark::State& s) { layerTile(s, app::LayerName::kWater); }
+void BM_Slope(benchmark::State& s) {
+  layerTile(s, app::LayerName::kSlope);
+}
+void BM_Aspect(benchmark::State& s) {
+  layerTile(s, app::LayerName::kAspect);
+}
+void BM_Illumination(benchmark::State& s) {
+  layerTile(s, app::LayerName::kIllumination);
+}
+void BM_Hillshade(benchmark::State& s) {
+  layerTile(s, app::LayerName::kHillshade);
+}
+void BM_Humidity(benchmark::State& s) {
+  layerTile(s, app::LayerName::kHumidity);
+}
+void BM_Sediment(benchmark::State& s) {
+  layerTile(s, app::LayerName::kSediment);
+}
+void BM_Vegetation(benchmark::State& s) {
+  layerTile(s, app::LayerName::kVegetation);
+}
+void BM_Water(benchmark::State& s) {
+  layerTile(s, app::LayerName::kWater);
+}
 
 BENCHMARK(BM_HeightmapTile)->Arg(12)->Arg(14)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Slope)->Arg(12)->Arg(14)->Unit(benchmark::kMillisecond);

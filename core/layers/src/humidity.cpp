@@ -23,7 +23,8 @@ std::vector<double> riverWetness(const construction::World& world, const tiling:
   const auto width = static_cast<std::size_t>(grid.width);
   const tiling::GridRows rows(grid);
   tiling::forEachRiverSegment(
-      world, grid.bounds, minWidth, kBeyond * Humidity::kMaxReachM, [&](const tiling::RiverSegment& s) {
+      world, grid.bounds, minWidth, kBeyond * Humidity::kMaxReachM,
+      [&](const tiling::RiverSegment& s) {
         const double reach =
             std::min(Humidity::kMaxReachM,
                      Humidity::kReachBaseM + Humidity::kReachPerWidth * 2.0 * s.halfWidth);

@@ -35,8 +35,7 @@ std::array<Ray, SkyView::kRays> makeRays() {
 }
 
 /// The sky-view factor at pixels (x0 + step·i, y) for i < count.
-void skyRow(const BorderedHeights& grid, int y, int x0, int step, std::size_t count,
-            double* out) {
+void skyRow(const BorderedHeights& grid, int y, int x0, int step, std::size_t count, double* out) {
   static const std::array<Ray, SkyView::kRays> rays = makeRays();
   thread_local std::vector<double> steepest, sum;
   steepest.assign(count, 0.0);

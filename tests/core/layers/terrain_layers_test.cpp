@@ -59,9 +59,8 @@ TEST(SkyView, OpenGroundSeesTheWholeSkyAndAPitLess) {
   for (double v : skyView(flat.grid))
     EXPECT_DOUBLE_EQ(v, 1.0);
   // A bowl: the centre sees less sky than its rim, and every value is in [0, 1].
-  const Raster bowl(16, 16, border, 10.0, 0, 0, [](int x, int y) {
-    return 0.5 * ((x - 8) * (x - 8) + (y - 8) * (y - 8));
-  });
+  const Raster bowl(16, 16, border, 10.0, 0, 0,
+                    [](int x, int y) { return 0.5 * ((x - 8) * (x - 8) + (y - 8) * (y - 8)); });
   const std::vector<double> v = skyView(bowl.grid);
   for (double s : v) {
     EXPECT_GE(s, 0.0);
@@ -69,9 +68,8 @@ TEST(SkyView, OpenGroundSeesTheWholeSkyAndAPitLess) {
   }
   EXPECT_LT(v[8 * 16 + 8], 0.8);
   // A peak sees all of it.
-  const Raster peak(16, 16, border, 10.0, 0, 0, [](int x, int y) {
-    return -0.5 * ((x - 8) * (x - 8) + (y - 8) * (y - 8));
-  });
+  const Raster peak(16, 16, border, 10.0, 0, 0,
+                    [](int x, int y) { return -0.5 * ((x - 8) * (x - 8) + (y - 8) * (y - 8)); });
   EXPECT_DOUBLE_EQ(skyView(peak.grid)[8 * 16 + 8], 1.0);
 }
 
@@ -87,8 +85,8 @@ TEST(SkyView, TheCoarseStepComputesEveryOtherPixelAndInterpolatesTheRest) {
 }
 
 /// `layer` of two side-by-side tiles and of one raster holding both agree pixel for pixel.
-void expectSeamless(int border, const std::function<std::vector<double>(const BorderedHeights&)>&
-                                        layer) {
+void expectSeamless(int border,
+                    const std::function<std::vector<double>(const BorderedHeights&)>& layer) {
   const int n = 32;
   const Raster whole(2 * n, n, border, 10.0, 0, 0, hills);
   const Raster west(n, n, border, 10.0, 0, 0, hills), east(n, n, border, 10.0, n, 0, hills);
