@@ -16,7 +16,7 @@ struct TileOptions {
   /// Cesium terrain only: the bytes gzipped (sent as Content-Encoding: gzip).
   bool gzip = false;
   /// Layer tiles only: the layer and its parameters.
-  LayerOptions layer;
+  LayerOptions layer = {};
 };
 
 /// The quantized-mesh extensions a Cesium client may ask for, as TileOptions::extensions bits.
