@@ -112,13 +112,13 @@ base::Result<RenderedTile> LayerRenderer::render(const RenderContext& context,
     break;
   }
   case LayerName::kHumidity:
-    bytes = grey8(layers::humidity(h, layers::riverWetness(world_, grid)), 255.0, size);
+    bytes = grey8(layers::humidity(h, layers::riverWetness(world_, grid, border)), 255.0, size);
     break;
   case LayerName::kSediment:
     bytes = grey8(layers::sedimentThickness(h), 100.0, size); // centimetres
     break;
   case LayerName::kVegetation: {
-    const std::vector<double> humidity = layers::humidity(h, layers::riverWetness(world_, grid));
+    const std::vector<double> humidity = layers::humidity(h, layers::riverWetness(world_, grid, border));
     const std::vector<std::uint8_t> water = insideOf(water_.ofGrid(grid), size, border);
     bytes =
         grey8(layers::vegetationDensity(layers::kSpecies[static_cast<std::size_t>(layer.species)],

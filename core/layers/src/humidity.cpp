@@ -9,10 +9,15 @@
 
 namespace strahler::layers {
 
-std::vector<double> riverWetness(const construction::World& world, const tiling::SampleGrid& grid) {
+std::vector<double> riverWetness(const construction::World& world, const tiling::SampleGrid& grid,
+                                 int border) {
   // The least distance-to-reach ratio per sample (exp is monotonic: one exp per sample).
   constexpr double kBeyond = 3.0;
-  std::vector<double> ratio(grid.points.size(), kBeyond);
+  const auto b = static_cast<std::size_t>(border);
+  const auto width = static_cast<std::size_t>(grid.width);
+  const std::size_t insideWidth = width - 2 * b,
+                    insideHeight = static_cast<std::size_t>(grid.height) - 2 * b;
+  std::vector<double> ratio(insideWidth * insideHeight, kBeyond);
   // A river counts at a sample when its wetness reaches half the row spacing (3R ≥ s / 2):
   // R ≥ s / 6 needs a width ≥ (s / 6 − base) / per.
   const auto widthFor = [](double spacing) {
@@ -20,7 +25,6 @@ std::vector<double> riverWetness(const construction::World& world, const tiling:
   };
   const double minWidth =
       widthFor(*std::min_element(grid.rowSpacing.begin(), grid.rowSpacing.end()));
-  const auto width = static_cast<std::size_t>(grid.width);
   const tiling::GridRows rows(grid);
   tiling::forEachRiverSegment(
       world, grid.bounds, minWidth, kBeyond * Humidity::kMaxReachM,
@@ -33,11 +37,15 @@ std::vector<double> riverWetness(const construction::World& world, const tiling:
         box.add(s.b);
         const double far = s.halfWidth + kBeyond * reach;
         rows.forEachIn(box.expanded(far), [&](std::size_t k) {
+          const std::size_t j = k / width, i = k % width;
+          if (j < b || j >= b + insideHeight || i < b || i >= b + insideWidth)
+            return;
           const double d2 = tiling::distance2ToSegment(grid.points[k], s.a, s.b);
-          if (d2 >= far * far || 2.0 * s.halfWidth < widthFor(grid.rowSpacing[k / width]))
+          if (d2 >= far * far || 2.0 * s.halfWidth < widthFor(grid.rowSpacing[j]))
             return;
           const double edge = std::max(0.0, std::sqrt(d2) - s.halfWidth);
-          ratio[k] = std::min(ratio[k], edge / reach);
+          double& r = ratio[(j - b) * insideWidth + (i - b)];
+          r = std::min(r, edge / reach);
         });
       });
   std::vector<double> wet(ratio.size(), 0.0);
@@ -49,7 +57,9 @@ std::vector<double> riverWetness(const construction::World& world, const tiling:
 
 std::vector<double> humidity(const BorderedHeights& grid, std::span<const double> wetness) {
   grid.check();
-  STRAHLER_ASSERT(wetness.size() == grid.heights.size(), "humidity: one wetness per sample");
+  STRAHLER_ASSERT(wetness.size() == static_cast<std::size_t>(grid.width) *
+                                        static_cast<std::size_t>(grid.height),
+                  "humidity: one wetness per pixel");
   const double tanDry = std::tan(Humidity::kDrySlopeDeg * std::numbers::pi / 180.0);
   std::vector<double> out;
   out.reserve(static_cast<std::size_t>(grid.width) * static_cast<std::size_t>(grid.height));
@@ -60,11 +70,12 @@ std::vector<double> humidity(const BorderedHeights& grid, std::span<const double
         continue;
       }
       const Gradient g = gradientAt(grid, x, y);
-      const double flat = std::max(0.0, 1.0 - std::hypot(g.dzdx, g.dzdy) / tanDry);
+      const double flat = std::max(0.0, 1.0 - std::sqrt(g.dzdx * g.dzdx + g.dzdy * g.dzdy) / tanDry);
       const double hollow =
           std::clamp(0.5 + concavityAt(grid, x, y) / (2.0 * Humidity::kConcavityScale), 0.0, 1.0);
-      const double river = wetness[static_cast<std::size_t>(y + grid.border) * grid.stride() +
-                                   static_cast<std::size_t>(x + grid.border)];
+      const double river = wetness[static_cast<std::size_t>(y) *
+                                       static_cast<std::size_t>(grid.width) +
+                                   static_cast<std::size_t>(x)];
       out.push_back(std::max(river, Humidity::kLocalWeight * flat * hollow));
     }
   return out;

@@ -17,7 +17,7 @@ std::vector<double> slopeDegrees(const BorderedHeights& grid) {
   for (int y = 0; y < grid.height; ++y)
     for (int x = 0; x < grid.width; ++x) {
       const Gradient g = gradientAt(grid, x, y);
-      out.push_back(std::atan(std::hypot(g.dzdx, g.dzdy)) * kDegrees);
+      out.push_back(std::atan(std::sqrt(g.dzdx * g.dzdx + g.dzdy * g.dzdy)) * kDegrees);
     }
   return out;
 }

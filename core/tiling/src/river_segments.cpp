@@ -25,7 +25,25 @@ GridRows::GridRows(const SampleGrid& grid) : grid_(grid) {
       rowY_[j].first = std::min(rowY_[j].first, grid.points[j * w + i].y);
       rowY_[j].second = std::max(rowY_[j].second, grid.points[j * w + i].y);
     }
+    if (j > 0)
+      southward_ = southward_ && rowY_[j].first <= rowY_[j - 1].first &&
+                   rowY_[j].second <= rowY_[j - 1].second;
   }
+}
+
+std::pair<std::size_t, std::size_t> GridRows::rowsIn(const Aabb& box) const {
+  if (!southward_)
+    return {0, rowY_.size()};
+  // Rows north of the box (least y above it) come first, rows south of it (greatest y below
+  // it) last.
+  const auto first = std::partition_point(rowY_.begin(), rowY_.end(), [&](const auto& row) {
+    return row.first > box.max.y;
+  });
+  const auto end = std::partition_point(first, rowY_.end(), [&](const auto& row) {
+    return row.second >= box.min.y;
+  });
+  return {static_cast<std::size_t>(first - rowY_.begin()),
+          static_cast<std::size_t>(end - rowY_.begin())};
 }
 
 std::size_t GridRows::firstAtLeast(std::size_t j, double x) const {

@@ -127,8 +127,8 @@ TEST(Sediment, NoneAtTheAngleOfReposeHalfOnAPlaneMoreInAHollow) {
 
 TEST(Humidity, WaterIsWetRiversWetTheirBanksFlatGroundKeepsSome) {
   const Raster r(4, 1, 1, 10.0, 0, 0, [](int x, int) { return x == 0 ? -1.0 : 5.0; });
-  std::vector<double> wetness(r.heights.size(), 0.0);
-  wetness[1 * 6 + 1 + 2] = 0.9; // pixel (2, 0): by a river
+  std::vector<double> wetness(4, 0.0);
+  wetness[2] = 0.9; // pixel (2, 0): by a river
   const std::vector<double> h = humidity(r.grid, wetness);
   EXPECT_EQ(h[0], 1.0); // below sea level
   EXPECT_DOUBLE_EQ(h[2], 0.9);

@@ -28,13 +28,15 @@ struct Humidity {
   static constexpr double kConcavityScale = 0.05; ///< As Sediment::kConcavityScale.
 };
 
-/// The rivers' wetness (Humidity) at every point of `grid` (a raster grid, rows west to east),
-/// row-major grid.width · grid.height; at each sample, rivers whose whole reach (3R) is under
-/// half its row's spacing are left out (so a sample's value is its own, whatever the grid).
-std::vector<double> riverWetness(const construction::World& world, const tiling::SampleGrid& grid);
+/// The rivers' wetness (Humidity) at the points of `grid` (a raster grid, rows west to east)
+/// inside a border of `border` samples, row-major (grid.width − 2·border) · (grid.height −
+/// 2·border); at each sample, rivers whose whole reach (3R) is under half its row's spacing are
+/// left out (so a sample's value is its own, whatever the grid).
+std::vector<double> riverWetness(const construction::World& world, const tiling::SampleGrid& grid,
+                                 int border);
 
 /// H of every pixel, row-major width · height; `wetness` is riverWetness() of the bordered
-/// grid (same size as grid.heights).
+/// grid of `grid`'s samples (one value per pixel).
 std::vector<double> humidity(const BorderedHeights& grid, std::span<const double> wetness);
 
 } // namespace strahler::layers

@@ -36,7 +36,8 @@ public:
   /// Calls `visit` with the index of every sample of the grid inside `box`.
   template <class Visit> void forEachIn(const geometry::Aabb& box, Visit&& visit) const {
     const auto w = static_cast<std::size_t>(grid_.width);
-    for (std::size_t j = 0; j < rowY_.size(); ++j) {
+    const auto [first, end] = rowsIn(box);
+    for (std::size_t j = first; j < end; ++j) {
       if (rowY_[j].second < box.min.y || rowY_[j].first > box.max.y)
         continue;
       for (std::size_t i = firstAtLeast(j, box.min.x); i < w; ++i) {
@@ -52,9 +53,13 @@ public:
 private:
   /// The first column of row j whose x is at least `x`.
   std::size_t firstAtLeast(std::size_t j, double x) const;
+  /// The rows [first, end) that may reach the y extent of `box` (all of them unless the rows'
+  /// extents fall southward, as both raster pyramids lay them).
+  std::pair<std::size_t, std::size_t> rowsIn(const geometry::Aabb& box) const;
 
   const SampleGrid& grid_;
   std::vector<std::pair<double, double>> rowY_; ///< Per row: its least and greatest y.
+  bool southward_ = true; ///< Both ends of the rows' extents fall from row to row.
 };
 
 /// Distance² from p to the segment [a, b].
