@@ -36,11 +36,10 @@ std::vector<double> riverWetness(const construction::World& world, const tiling:
         box.add(s.a);
         box.add(s.b);
         const double far = s.halfWidth + kBeyond * reach;
-        rows.forEachIn(box.expanded(far), [&](std::size_t k) {
-          const std::size_t j = k / width, i = k % width;
+        rows.forEachIn(box.expanded(far), [&](std::size_t j, std::size_t i) {
           if (j < b || j >= b + insideHeight || i < b || i >= b + insideWidth)
             return;
-          const double d2 = tiling::distance2ToSegment(grid.points[k], s.a, s.b);
+          const double d2 = tiling::distance2ToSegment(grid.points[j * width + i], s.a, s.b);
           if (d2 >= far * far || 2.0 * s.halfWidth < widthFor(grid.rowSpacing[j]))
             return;
           const double edge = std::max(0.0, std::sqrt(d2) - s.halfWidth);
@@ -48,10 +47,12 @@ std::vector<double> riverWetness(const construction::World& world, const tiling:
           r = std::min(r, edge / reach);
         });
       });
+  // exp(−d/R) lowered to reach 0 at 3R (no step where the reach ends), 1 in the channel.
+  const double floor = std::exp(-kBeyond);
   std::vector<double> wet(ratio.size(), 0.0);
   for (std::size_t k = 0; k < ratio.size(); ++k)
     if (ratio[k] < kBeyond)
-      wet[k] = std::exp(-ratio[k]);
+      wet[k] = (std::exp(-ratio[k]) - floor) / (1.0 - floor);
   return wet;
 }
 

@@ -89,9 +89,10 @@ std::vector<std::uint8_t> WaterMask::ofGrid(const SampleGrid& grid) const {
     Aabb box;
     box.add(s.a);
     box.add(s.b);
-    rows.forEachIn(box.expanded(s.halfWidth), [&](std::size_t k) {
+    rows.forEachIn(box.expanded(s.halfWidth), [&](std::size_t j, std::size_t i) {
       // Per sample, by its own row's spacing, so that neighbouring tiles agree.
-      if (2.0 * s.halfWidth >= grid.rowSpacing[k / width] &&
+      const std::size_t k = j * width + i;
+      if (2.0 * s.halfWidth >= grid.rowSpacing[j] &&
           distance2ToSegment(grid.points[k], s.a, s.b) <= s.halfWidth * s.halfWidth)
         mask[k] = kWater;
     });

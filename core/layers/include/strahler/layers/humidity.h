@@ -12,8 +12,9 @@ namespace strahler::layers {
 /// The seed's humidity H in [0, 1], as a local function of position. The seed accumulates
 /// flow downhill over the whole map, which no tile can do alone; the world already did it:
 /// its rivers carry the accumulated flow (their width grows with it). So H is the larger of
-///  - the rivers' wetness: exp(−d / R) at distance d from a channel's edge (1 in it), reach
-///    R = min(kMaxReachM, kReachBaseM + kReachPerWidth · channel width), nothing beyond 3R:
+///  - the rivers' wetness: (exp(−d / R) − e⁻³) / (1 − e⁻³) at distance d from a channel's edge
+///    (1 in it, 0 from 3R on), reach R = min(kMaxReachM, kReachBaseM + kReachPerWidth ·
+///    channel width):
 ///    large rivers wet a wide floodplain, brooks a strip;
 ///  - a local wetness index standing for ln(A / tan β) where A is not local: flat ground and
 ///    hollows keep water, kLocalWeight · (1 − tan β / tan kDrySlopeDeg)₊ · C, C the concavity

@@ -33,7 +33,7 @@ class GridRows {
 public:
   /// An index over `grid` (which must outlive it).
   explicit GridRows(const SampleGrid& grid);
-  /// Calls `visit` with the index of every sample of the grid inside `box`.
+  /// Calls `visit(row, column)` for every sample of the grid inside `box`.
   template <class Visit> void forEachIn(const geometry::Aabb& box, Visit&& visit) const {
     const auto w = static_cast<std::size_t>(grid_.width);
     const auto [first, end] = rowsIn(box);
@@ -45,7 +45,7 @@ public:
         if (p.x > box.max.x)
           break;
         if (p.y >= box.min.y && p.y <= box.max.y)
-          visit(j * w + i);
+          visit(j, i);
       }
     }
   }
