@@ -82,8 +82,18 @@ base::Result<RenderedTile> LayerRenderer::render(const RenderContext& context,
     return base::makeError(base::ErrorCode::kInvalidInput,
                            "layer tiles are served in the Web Mercator and local pyramids");
   const LayerOptions& layer = request.options.layer;
-  const int border = borderOf(layer.name, size);
   RenderedTile out;
+  if (layer.name == LayerName::kWater) { // no heights: the coast and rivers at the pixels
+    const auto start = RenderClock::now();
+    STRAHLER_ASSIGN_OR_RETURN(
+        out.bytes,
+        encoding::encodeGrey8Png(water_.ofGrid(context.scheme.rasterGrid(request.tile, size)),
+                                 size, size));
+    out.mimeType = "image/png";
+    out.encodeMs = millisecondsSince(start);
+    return out;
+  }
+  const int border = borderOf(layer.name, size);
   const tiling::SampleGrid grid = context.scheme.borderedRasterGrid(request.tile, size, border);
   const std::vector<double> heights = evaluateGrid(context, grid, out);
   const auto start = RenderClock::now();
@@ -127,8 +137,7 @@ base::Result<RenderedTile> LayerRenderer::render(const RenderContext& context,
               255.0, size);
     break;
   }
-  case LayerName::kWater:
-    bytes = encoding::encodeGrey8Png(insideOf(water_.ofGrid(grid), size, border), size, size);
+  case LayerName::kWater: // answered above
     break;
   }
   if (!bytes)
