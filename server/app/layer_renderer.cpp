@@ -86,9 +86,8 @@ base::Result<RenderedTile> LayerRenderer::render(const RenderContext& context,
   if (layer.name == LayerName::kWater) { // no heights: the coast and rivers at the pixels
     const auto start = RenderClock::now();
     STRAHLER_ASSIGN_OR_RETURN(
-        out.bytes,
-        encoding::encodeGrey8Png(water_.ofGrid(context.scheme.rasterGrid(request.tile, size)),
-                                 size, size));
+        out.bytes, encoding::encodeGrey8Png(
+                       water_.ofGrid(context.scheme.rasterGrid(request.tile, size)), size, size));
     out.mimeType = "image/png";
     out.encodeMs = millisecondsSince(start);
     return out;
@@ -128,7 +127,8 @@ base::Result<RenderedTile> LayerRenderer::render(const RenderContext& context,
     bytes = grey8(layers::sedimentThickness(h), 100.0, size); // centimetres
     break;
   case LayerName::kVegetation: {
-    const std::vector<double> humidity = layers::humidity(h, layers::riverWetness(world_, grid, border));
+    const std::vector<double> humidity =
+        layers::humidity(h, layers::riverWetness(world_, grid, border));
     const std::vector<std::uint8_t> water = insideOf(water_.ofGrid(grid), size, border);
     bytes =
         grey8(layers::vegetationDensity(layers::kSpecies[static_cast<std::size_t>(layer.species)],

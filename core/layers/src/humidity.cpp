@@ -58,8 +58,8 @@ std::vector<double> riverWetness(const construction::World& world, const tiling:
 
 std::vector<double> humidity(const BorderedHeights& grid, std::span<const double> wetness) {
   grid.check();
-  STRAHLER_ASSERT(wetness.size() == static_cast<std::size_t>(grid.width) *
-                                        static_cast<std::size_t>(grid.height),
+  STRAHLER_ASSERT(wetness.size() ==
+                      static_cast<std::size_t>(grid.width) * static_cast<std::size_t>(grid.height),
                   "humidity: one wetness per pixel");
   const double tanDry = std::tan(Humidity::kDrySlopeDeg * std::numbers::pi / 180.0);
   std::vector<double> out;
@@ -71,12 +71,13 @@ std::vector<double> humidity(const BorderedHeights& grid, std::span<const double
         continue;
       }
       const Gradient g = gradientAt(grid, x, y);
-      const double flat = std::max(0.0, 1.0 - std::sqrt(g.dzdx * g.dzdx + g.dzdy * g.dzdy) / tanDry);
+      const double flat =
+          std::max(0.0, 1.0 - std::sqrt(g.dzdx * g.dzdx + g.dzdy * g.dzdy) / tanDry);
       const double hollow =
           std::clamp(0.5 + concavityAt(grid, x, y) / (2.0 * Humidity::kConcavityScale), 0.0, 1.0);
-      const double river = wetness[static_cast<std::size_t>(y) *
-                                       static_cast<std::size_t>(grid.width) +
-                                   static_cast<std::size_t>(x)];
+      const double river =
+          wetness[static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) +
+                  static_cast<std::size_t>(x)];
       out.push_back(std::max(river, Humidity::kLocalWeight * flat * hollow));
     }
   return out;

@@ -14,7 +14,8 @@ std::vector<double> sedimentThickness(const BorderedHeights& grid) {
   for (int y = 0; y < grid.height; ++y)
     for (int x = 0; x < grid.width; ++x) {
       const Gradient g = gradientAt(grid, x, y);
-      const double stable = std::max(0.0, 1.0 - std::sqrt(g.dzdx * g.dzdx + g.dzdy * g.dzdy) / tanRepose);
+      const double stable =
+          std::max(0.0, 1.0 - std::sqrt(g.dzdx * g.dzdx + g.dzdy * g.dzdy) / tanRepose);
       const double hollow =
           std::clamp(0.5 + concavityAt(grid, x, y) / (2.0 * Sediment::kConcavityScale), 0.0, 1.0);
       out.push_back(Sediment::kMaxM * stable * hollow);

@@ -36,12 +36,10 @@ std::pair<std::size_t, std::size_t> GridRows::rowsIn(const Aabb& box) const {
     return {0, rowY_.size()};
   // Rows north of the box (least y above it) come first, rows south of it (greatest y below
   // it) last.
-  const auto first = std::partition_point(rowY_.begin(), rowY_.end(), [&](const auto& row) {
-    return row.first > box.max.y;
-  });
-  const auto end = std::partition_point(first, rowY_.end(), [&](const auto& row) {
-    return row.second >= box.min.y;
-  });
+  const auto first = std::partition_point(rowY_.begin(), rowY_.end(),
+                                          [&](const auto& row) { return row.first > box.max.y; });
+  const auto end = std::partition_point(first, rowY_.end(),
+                                        [&](const auto& row) { return row.second >= box.min.y; });
   return {static_cast<std::size_t>(first - rowY_.begin()),
           static_cast<std::size_t>(end - rowY_.begin())};
 }
