@@ -18,8 +18,9 @@
 namespace strahler::app {
 namespace {
 
-/// The sky view's step for a tile of `size`: 2 (a quarter of the rays, interpolated) where the
-/// tiles' pixel (0, 0) has even global indices, which an even size guarantees.
+/// The step of the sky view and the rivers' wetness for a tile of `size`: 2 (a quarter of the
+/// work, interpolated) where the tiles' pixel (0, 0) has even global indices, which an even
+/// size guarantees.
 int skyStep(int size) noexcept {
   return size % 2 == 0 ? 2 : 1;
 }
@@ -121,14 +122,15 @@ base::Result<RenderedTile> LayerRenderer::render(const RenderContext& context,
     break;
   }
   case LayerName::kHumidity:
-    bytes = grey8(layers::humidity(h, layers::riverWetness(world_, grid, border)), 255.0, size);
+    bytes = grey8(layers::humidity(h, layers::riverWetness(world_, grid, border, skyStep(size))),
+                  255.0, size);
     break;
   case LayerName::kSediment:
     bytes = grey8(layers::sedimentThickness(h), 100.0, size); // centimetres
     break;
   case LayerName::kVegetation: {
     const std::vector<double> humidity =
-        layers::humidity(h, layers::riverWetness(world_, grid, border));
+        layers::humidity(h, layers::riverWetness(world_, grid, border, skyStep(size)));
     const std::vector<std::uint8_t> water = insideOf(water_.ofGrid(grid), size, border);
     bytes =
         grey8(layers::vegetationDensity(layers::kSpecies[static_cast<std::size_t>(layer.species)],

@@ -1,5 +1,7 @@
 #include "strahler/layers/humidity.h"
 
+#include "upsample.h"
+
 #include "strahler/base/assert.h"
 #include "strahler/tiling/river_segments.h"
 
@@ -10,14 +12,22 @@
 namespace strahler::layers {
 
 std::vector<double> riverWetness(const construction::World& world, const tiling::SampleGrid& grid,
-                                 int border) {
+                                 int border, int step) {
   // The least distance-to-reach ratio per sample (exp is monotonic: one exp per sample).
   constexpr double kBeyond = 3.0;
   const auto b = static_cast<std::size_t>(border);
   const auto width = static_cast<std::size_t>(grid.width);
   const std::size_t insideWidth = width - 2 * b,
                     insideHeight = static_cast<std::size_t>(grid.height) - 2 * b;
-  std::vector<double> ratio(insideWidth * insideHeight, kBeyond);
+  STRAHLER_ASSERT(step == 1 ||
+                      (step == 2 && border >= 1 && insideWidth % 2 == 0 && insideHeight % 2 == 0),
+                  "riverWetness: step 1, or 2 on an even raster with a border");
+  // The samples computed: every one inside, or (step 2) every other one of every other row up
+  // to the first of the border, the next tile's first.
+  const auto s = static_cast<std::size_t>(step);
+  const std::size_t cw = step == 1 ? insideWidth : insideWidth / 2 + 1,
+                    ch = step == 1 ? insideHeight : insideHeight / 2 + 1;
+  std::vector<double> ratio(cw * ch, kBeyond);
   // A river counts at a sample when its wetness reaches half the row spacing (3R ≥ s / 2):
   // R ≥ s / 6 needs a width ≥ (s / 6 − base) / per.
   const auto widthFor = [](double spacing) {
@@ -28,23 +38,26 @@ std::vector<double> riverWetness(const construction::World& world, const tiling:
   const tiling::GridRows rows(grid);
   tiling::forEachRiverSegment(
       world, grid.bounds, minWidth, kBeyond * Humidity::kMaxReachM,
-      [&](const tiling::RiverSegment& s) {
-        const double reach =
-            std::min(Humidity::kMaxReachM,
-                     Humidity::kReachBaseM + Humidity::kReachPerWidth * 2.0 * s.halfWidth);
+      [&](const tiling::RiverSegment& segment) {
+        const double half = segment.halfWidth;
+        const double reach = std::min(
+            Humidity::kMaxReachM, Humidity::kReachBaseM + Humidity::kReachPerWidth * 2.0 * half);
         geometry::Aabb box;
-        box.add(s.a);
-        box.add(s.b);
-        const double far = s.halfWidth + kBeyond * reach;
+        box.add(segment.a);
+        box.add(segment.b);
+        const double far = half + kBeyond * reach;
         rows.forEachIn(box.expanded(far), [&](std::size_t j, std::size_t i) {
-          if (j < b || j >= b + insideHeight || i < b || i >= b + insideWidth)
+          if (j < b || i < b || (j - b) % s != 0 || (i - b) % s != 0)
             return;
-          const double d2 = tiling::distance2ToSegment(grid.points[j * width + i], s.a, s.b);
-          if (d2 >= far * far || 2.0 * s.halfWidth < widthFor(grid.rowSpacing[j]))
+          const std::size_t cj = (j - b) / s, ci = (i - b) / s;
+          if (cj >= ch || ci >= cw)
             return;
-          const double edge = std::max(0.0, std::sqrt(d2) - s.halfWidth);
-          double& r = ratio[(j - b) * insideWidth + (i - b)];
-          r = std::min(r, edge / reach);
+          const double d2 =
+              tiling::distance2ToSegment(grid.points[j * width + i], segment.a, segment.b);
+          if (d2 >= far * far || 2.0 * half < widthFor(grid.rowSpacing[j]))
+            return;
+          double& r = ratio[cj * cw + ci];
+          r = std::min(r, std::max(0.0, std::sqrt(d2) - half) / reach);
         });
       });
   // exp(−d/R) lowered to reach 0 at 3R (no step where the reach ends), 1 in the channel.
@@ -53,7 +66,7 @@ std::vector<double> riverWetness(const construction::World& world, const tiling:
   for (std::size_t k = 0; k < ratio.size(); ++k)
     if (ratio[k] < kBeyond)
       wet[k] = (std::exp(-ratio[k]) - floor) / (1.0 - floor);
-  return wet;
+  return step == 1 ? wet : detail::upsampleEven(wet, insideWidth, insideHeight);
 }
 
 std::vector<double> humidity(const BorderedHeights& grid, std::span<const double> wetness) {

@@ -1,5 +1,7 @@
 #include "strahler/layers/sky_view.h"
 
+#include "upsample.h"
+
 #include "strahler/base/assert.h"
 
 #include <algorithm>
@@ -82,19 +84,7 @@ std::vector<double> skyView(const BorderedHeights& grid, int step) {
   std::vector<double> coarse(cw * ch);
   for (std::size_t j = 0; j < ch; ++j)
     skyRow(grid, static_cast<int>(2 * j), 0, 2, cw, &coarse[j * cw]);
-  for (std::size_t y = 0; y < static_cast<std::size_t>(grid.height); ++y) {
-    const std::size_t j = y / 2;
-    const double ty = y % 2 == 1 ? 0.5 : 0.0;
-    for (std::size_t x = 0; x < width; ++x) {
-      const std::size_t i = x / 2;
-      const double tx = x % 2 == 1 ? 0.5 : 0.0;
-      const double* a = &coarse[j * cw + i];
-      const double top = a[0] + tx * (a[1] - a[0]);
-      const double bottom = a[cw] + tx * (a[cw + 1] - a[cw]);
-      out[y * width + x] = ty == 0.0 ? top : top + ty * (bottom - top);
-    }
-  }
-  return out;
+  return detail::upsampleEven(coarse, width, static_cast<std::size_t>(grid.height));
 }
 
 } // namespace strahler::layers

@@ -32,9 +32,11 @@ struct Humidity {
 /// The rivers' wetness (Humidity) at the points of `grid` (a raster grid, rows west to east)
 /// inside a border of `border` samples, row-major (grid.width − 2·border) · (grid.height −
 /// 2·border); at each sample, rivers whose whole reach (3R) is under half its row's spacing are
-/// left out (so a sample's value is its own, whatever the grid).
+/// left out (so a sample's value is its own, whatever the grid). `step` 2 (an even raster
+/// inside the border whose first pixel has even global indices, as every tile of an even size)
+/// computes every other sample of every other row and interpolates bilinearly, as skyView().
 std::vector<double> riverWetness(const construction::World& world, const tiling::SampleGrid& grid,
-                                 int border);
+                                 int border, int step = 1);
 
 /// H of every pixel, row-major width · height; `wetness` is riverWetness() of the bordered
 /// grid of `grid`'s samples (one value per pixel).
