@@ -45,13 +45,16 @@ base::Result<std::string> grey8(const std::vector<double>& values, double scale,
   return encoding::encodeGrey8Png(bytes, size, size);
 }
 
-/// 16-bit grey of `values` in hundredths (of a degree), `flat` where the value is < 0.
+/// 16-bit grey of `values` in hundredths (of a degree), `flat` where the value is < 0; with
+/// `wrap`, 36000 (a bearing rounded up to 360°) is 0.
 base::Result<std::string> grey16Hundredths(const std::vector<double>& values, int size,
-                                           std::uint16_t flat) {
+                                           std::uint16_t flat, bool wrap) {
   std::vector<std::uint16_t> samples(values.size());
-  std::transform(values.begin(), values.end(), samples.begin(), [flat](double v) {
-    return v < 0.0 ? flat
-                   : static_cast<std::uint16_t>(std::clamp(std::lround(v * 100.0), 0l, 65534l));
+  std::transform(values.begin(), values.end(), samples.begin(), [flat, wrap](double v) {
+    if (v < 0.0)
+      return flat;
+    const long hundredths = std::clamp(std::lround(v * 100.0), 0l, 65534l);
+    return static_cast<std::uint16_t>(wrap ? hundredths % 36000 : hundredths);
   });
   return encoding::encodeGrey16Png(samples, size, size);
 }
@@ -101,10 +104,10 @@ base::Result<RenderedTile> LayerRenderer::render(const RenderContext& context,
   base::Result<std::string> bytes = std::string();
   switch (layer.name) {
   case LayerName::kSlope:
-    bytes = grey16Hundredths(layers::slopeDegrees(h), size, 0);
+    bytes = grey16Hundredths(layers::slopeDegrees(h), size, 0, false);
     break;
   case LayerName::kAspect:
-    bytes = grey16Hundredths(layers::aspectDegrees(h), size, 65535);
+    bytes = grey16Hundredths(layers::aspectDegrees(h), size, 65535, true);
     break;
   case LayerName::kIllumination:
     bytes = grey8(layers::skyView(h, skyStep(size)), 255.0, size);

@@ -153,6 +153,9 @@ TEST(LayerTile, EachLayerHasItsDocumentedEncoding) {
   EXPECT_LE(*hi, 9000);
   EXPECT_GT(*hi, 500); // steeper than 5° somewhere in the hills
   EXPECT_LT(*lo, *hi);
+  // Aspect in hundredths of a degree below 360°, or 65535 on flat ground.
+  for (std::uint16_t a : render(layerRequest(LayerName::kAspect, kHills)).samples)
+    ASSERT_TRUE(a < 36000 || a == 65535) << a;
   // Sediment in centimetres, at most Sediment::kMaxM.
   for (std::uint16_t s : render(layerRequest(LayerName::kSediment, kHills)).samples)
     ASSERT_LE(s, 200);
