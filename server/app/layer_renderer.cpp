@@ -136,9 +136,9 @@ base::Result<RenderedTile> LayerRenderer::render(const RenderContext& context,
         layers::humidity(h, layers::riverWetness(world_, grid, border, skyStep(size)));
     const std::vector<std::uint8_t> water = insideOf(water_.ofGrid(grid), size, border);
     bytes =
-        grey8(layers::vegetationDensity(layers::kSpecies[static_cast<std::size_t>(layer.species)],
-                                        layers::sedimentThickness(h),
-                                        layers::skyView(h, skyStep(size)), humidity, water),
+        grey8(layers::vegetationDensity(
+                  layers::speciesOf(world_.data().params, static_cast<std::size_t>(layer.species)),
+                  layers::sedimentThickness(h), layers::skyView(h, skyStep(size)), humidity, water),
               255.0, size);
     break;
   }

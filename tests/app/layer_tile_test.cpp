@@ -190,6 +190,22 @@ TEST(LayerTile, TilesAreCutsOfTheirParentSoNeighboursAgreeAlongTheirEdges) {
   }
 }
 
+TEST(LayerTile, VegetationFollowsTheCurvesOfTheWorldsParams) {
+  // Trees that need 9,000 m of soil: none anywhere; bushes keep their default curves.
+  input::WorldSpec spec = strahler::test_support::defaultIslandSpec();
+  spec.params.vegetation["tree"] = {{9000, 9001, 9002, 9003}, {0, 0, 1, 1}, {0, 0, 1, 1}};
+  const TileService barren(construction::generateWorldData(spec, "barren").value());
+  TileRequest trees = layerRequest(LayerName::kVegetation, kHills, 64);
+  const auto none = barren.render(trees);
+  ASSERT_TRUE(none.ok()) << none.error().message;
+  for (std::uint16_t d : decode(none.value().bytes).samples)
+    ASSERT_EQ(d, 0);
+  EXPECT_GT(render(trees).samples, decode(none.value().bytes).samples); // the default world's
+  TileRequest bushes = trees;
+  bushes.options.layer.species = 1;
+  EXPECT_EQ(decode(barren.render(bushes).value().bytes).samples, render(bushes).samples);
+}
+
 TEST(LayerTile, TheSameRequestGivesTheSameBytes) {
   const TileRequest r = layerRequest(LayerName::kVegetation, kHills);
   const auto a = service().render(r), b = service().render(r);

@@ -1,6 +1,7 @@
 #include "strahler/layers/vegetation_density.h"
 
 #include "strahler/base/assert.h"
+#include "strahler/input/params.h"
 
 #include <algorithm>
 
@@ -14,6 +15,21 @@ double ResponseCurve::operator()(double x) const noexcept {
   if (x > fall1)
     return fall0 > fall1 ? (fall0 - x) / (fall0 - fall1) : 1.0;
   return 1.0;
+}
+
+Species speciesOf(const input::Params& params, std::size_t index) {
+  STRAHLER_ASSERT(index < kSpecies.size(), "speciesOf: no such species");
+  Species species = kSpecies[index];
+  const auto set = params.vegetation.find(std::string(species.name));
+  if (set == params.vegetation.end())
+    return species;
+  const auto curve = [](const std::array<double, 4>& v) {
+    return ResponseCurve{v[0], v[1], v[2], v[3]};
+  };
+  species.sediment = curve(set->second.sediment);
+  species.illumination = curve(set->second.illumination);
+  species.humidity = curve(set->second.humidity);
+  return species;
 }
 
 int speciesIndex(std::string_view name) noexcept {

@@ -1,4 +1,5 @@
 // The seed's response curves and density D = C_S · (C_I + C_H) / 2 (vegetation_density.h).
+#include "strahler/input/params.h"
 #include "strahler/layers/vegetation_density.h"
 
 #include <gtest/gtest.h>
@@ -36,6 +37,23 @@ TEST(VegetationDensity, BushesKeepOffWetGroundWhereTreesThrive) {
   const Environment wetValley{1.5, 0.7, 1.0, false}, dryCrest{0.4, 1.0, 0.05, false};
   EXPECT_GT(vegetationDensity(tree, wetValley), vegetationDensity(bush, wetValley));
   EXPECT_GT(vegetationDensity(bush, dryCrest), vegetationDensity(tree, dryCrest));
+}
+
+TEST(VegetationDensity, AWorldsParamsReplaceTheCurvesOfTheSpeciesTheyName) {
+  input::Params params;
+  EXPECT_EQ(speciesOf(params, 0).sediment.rise0, kSpecies[0].sediment.rise0);
+  params.vegetation["bush"] = {{1, 2, 3, 4}, {0, 0.5, 1, 1}, {0, 0.1, 0.2, 0.3}};
+  const Species bush = speciesOf(params, static_cast<std::size_t>(speciesIndex("bush")));
+  EXPECT_EQ(bush.name, "bush");
+  EXPECT_EQ(bush.sediment.rise0, 1.0);
+  EXPECT_EQ(bush.sediment.fall0, 4.0);
+  EXPECT_EQ(bush.humidity.fall1, 0.2);
+  // The tree keeps its defaults.
+  EXPECT_EQ(speciesOf(params, 0).humidity.rise1, kSpecies[0].humidity.rise1);
+  // params.json's species are core/layers' species.
+  for (const char* name : input::kVegetationSpecies)
+    EXPECT_GE(speciesIndex(name), 0) << name;
+  EXPECT_EQ(std::size(input::kVegetationSpecies), kSpecies.size());
 }
 
 TEST(VegetationDensity, GridsAreThePointwiseDensity) {

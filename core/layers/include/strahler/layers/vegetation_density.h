@@ -9,6 +9,10 @@
 #include <string_view>
 #include <vector>
 
+namespace strahler::input {
+struct Params;
+} // namespace strahler::input
+
 namespace strahler::layers {
 
 /// A response curve C(x) ∈ [0, 1]: 0 up to `rise0`, rising linearly to 1 at `rise1`, 1 up to
@@ -32,7 +36,8 @@ struct Species {
   ResponseCurve humidity;     ///< C_H of the humidity H, 0 … 1.
 };
 
-/// The species strahler knows, with their curves (the seed's two: trees and bushes).
+/// The species strahler knows, with their default curves (the seed's two: trees and bushes);
+/// a world's params.json may replace them ("vegetation", speciesOf()).
 /// - tree: needs soil (C_S 0 below 0.3 m, 1 from 1 m), likes open sky but stands in valleys
 ///   (C_I 0.55 → 0.8 … 1), and moisture (C_H 0.15 → 0.45 … 1): forests on deep soil in the
 ///   valleys and along rivers.
@@ -42,6 +47,10 @@ inline constexpr std::array<Species, 2> kSpecies{{
     {"tree", {0.3, 1.0, 10.0, 10.0}, {0.55, 0.8, 1.0, 1.0}, {0.15, 0.45, 1.0, 1.0}},
     {"bush", {0.05, 0.3, 10.0, 10.0}, {0.75, 0.9, 1.0, 1.0}, {0.0, 0.1, 0.5, 0.9}},
 }};
+
+/// kSpecies[index] with the curves a world's params.json sets for it (Params::vegetation), if
+/// any. Asserts index < kSpecies.size().
+Species speciesOf(const input::Params& params, std::size_t index);
 
 /// Index of the species named `name` in kSpecies, or −1.
 int speciesIndex(std::string_view name) noexcept;
