@@ -20,6 +20,8 @@ enum class Endpoint {
   kTile,           ///< /worlds/{id}/{tiles|local}/{z}/{x}/{y}.{format} (parseTileRoute).
   kCesiumLayer,    ///< /worlds/{id}/cesium/layer.json.
   kCesiumTerrain,  ///< /worlds/{id}/cesium/{z}/{x}/{y}.terrain (parseCesiumTerrainRoute).
+  kLayerTile,      ///< /worlds/{id}/layers/{name}/[local/]{z}/{x}/{y}.png (parseLayerRoute).
+  kLayerTileJson,  ///< /worlds/{id}/layers/{name}/tilejson.json: one layer's TileJSON.
   kNoSuchResource, ///< Anything else under /worlds/{id}: 404 once the world is known.
   kStaticFile,     ///< Anything else: a file of the built viewer, or 404.
   kVectorTileJson, ///< /worlds/{id}/vector/tilejson.json.

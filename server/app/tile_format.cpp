@@ -1,5 +1,7 @@
 #include "tile_format.h"
 
+#include <iterator>
+
 namespace strahler::app {
 
 base::Result<TileFormat> parseTileFormat(const std::string& name) {
@@ -29,6 +31,17 @@ base::Result<TileFormat> parseTileFormat(const std::string& name) {
           "' (use png, terrarium, png16, tif, exr, drc, glb, relief, terrain or mvt)");
 }
 
+base::Result<LayerName> parseLayerName(const std::string& name) {
+  for (std::size_t i = 0; i < std::size(kLayerNames); ++i)
+    if (name == kLayerNames[i])
+      return static_cast<LayerName>(i);
+  std::string known;
+  for (const char* n : kLayerNames)
+    known += (known.empty() ? "" : ", ") + std::string(n);
+  return base::makeError(base::ErrorCode::kNotFound,
+                         "unknown layer '" + name.substr(0, 64) + "' (layers: " + known + ")");
+}
+
 const char* canonicalFormatName(TileFormat format) noexcept {
   switch (format) {
   case TileFormat::kTerrainRgb:
@@ -51,6 +64,8 @@ const char* canonicalFormatName(TileFormat format) noexcept {
     return "relief";
   case TileFormat::kMvt:
     return "mvt";
+  case TileFormat::kLayerPng:
+    return "layer";
   }
   return "png";
 }
@@ -62,6 +77,8 @@ TileKind tileKind(TileFormat format) noexcept {
     return TileKind::kRelief;
   if (format == TileFormat::kMvt)
     return TileKind::kVector;
+  if (format == TileFormat::kLayerPng)
+    return TileKind::kLayer;
   return format == TileFormat::kDraco || format == TileFormat::kGlb ? TileKind::kMesh
                                                                     : TileKind::kHeightmap;
 }

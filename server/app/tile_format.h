@@ -20,6 +20,7 @@ enum class TileFormat {
   kRelief,        ///< A colour-relief picture (relief).
   kQuantizedMesh, ///< Cesium's quantized-mesh-1.0 (.terrain), geographic pyramid only.
   kMvt,           ///< A Mapbox Vector Tile 2.1 (.mvt), Web Mercator pyramid only.
+  kLayerPng,      ///< A derived layer (layers/{name}/...png): 8- or 16-bit grey PNG.
 };
 
 /// The kind of data a tile carries; each kind has one renderer (tile_renderer.h), and a
@@ -30,7 +31,37 @@ enum class TileKind {
   kRelief,    ///< A colour-relief picture: hypsometric tint × hillshade (relief).
   kTerrain,   ///< A Cesium terrain tile: adaptive mesh, normals, water mask, availability.
   kVector,    ///< A vector tile: rivers, contours, water, the artist's map (mvt).
+  kLayer,     ///< A derived layer of the terrain (slope, sky view, water, ...): LayerName.
 };
+
+/// The derived layers (docs/architecture.md, "Layer tiles"), as named in URLs.
+enum class LayerName {
+  kSlope,        ///< "slope": degrees, 16-bit grey (value = degrees · 100).
+  kAspect,       ///< "aspect": degrees from north, 16-bit grey (· 100; 65535 flat).
+  kIllumination, ///< "illumination": the seed's sky view, 8-bit grey (· 255).
+  kHillshade,    ///< "hillshade": Lambert under ?azimuth=&altitude=, 8-bit grey (· 255).
+  kHumidity,     ///< "humidity": 0 … 1, 8-bit grey (· 255).
+  kSediment,     ///< "sediment": thickness, 8-bit grey (centimetres).
+  kVegetation,   ///< "vegetation": density of ?species=, 8-bit grey (· 255).
+  kWater,        ///< "water": sea, lakes and rivers 255, land 0, 8-bit grey.
+};
+
+/// Every layer name, in LayerName order.
+inline constexpr const char* kLayerNames[] = {"slope",    "aspect",   "illumination", "hillshade",
+                                              "humidity", "sediment", "vegetation",   "water"};
+
+/// What a layer tile asks for beyond its zoom, position and size, in canonical form.
+struct LayerOptions {
+  LayerName name = LayerName::kSlope; ///< The layer.
+  int species = 0;                    ///< kVegetation: index in layers::kSpecies; else 0.
+  double azimuthDeg = 0.0;            ///< kHillshade: sun azimuth (0 … 360); else 0.
+  double altitudeDeg = 0.0;           ///< kHillshade: sun altitude (0 … 90); else 0.
+
+  friend bool operator==(const LayerOptions&, const LayerOptions&) = default;
+};
+
+/// The layer named `name`, or kNotFound naming the layers there are.
+base::Result<LayerName> parseLayerName(const std::string& name);
 
 /// Size bounds: raster tiles have size² pixels, mesh tiles size² quads ((size+1)² vertices).
 struct TileSizes {
@@ -53,7 +84,7 @@ struct TileSizeRange {
 base::Result<TileFormat> parseTileFormat(const std::string& name);
 
 /// The name of `format` in URLs (png, terrarium, png16, tif, exr, drc, glb, relief, terrain,
-/// mvt).
+/// mvt; "layer" for layer tiles, which are .png under layers/{name}/).
 const char* canonicalFormatName(TileFormat format) noexcept;
 
 /// The kind of tile `format` encodes.

@@ -39,6 +39,20 @@ std::string tileKey(const TileRequest& request) {
   }
   if (request.kind() == TileKind::kVector)
     key.append(request.options.gzip ? "|gz" : "|id");
+  if (request.kind() == TileKind::kLayer) {
+    const LayerOptions& layer = request.options.layer;
+    key.push_back('|');
+    key.append(kLayerNames[static_cast<std::size_t>(layer.name)]);
+    if (layer.name == LayerName::kVegetation) {
+      key.push_back('|');
+      append(layer.species);
+    }
+    if (layer.name == LayerName::kHillshade)
+      for (const double degrees : {layer.azimuthDeg, layer.altitudeDeg}) {
+        key.push_back('|'); // shortest round-trip spelling: one per value
+        key.append(number, std::to_chars(number, number + sizeof number, degrees).ptr);
+      }
+  }
   return key;
 }
 

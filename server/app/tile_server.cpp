@@ -3,6 +3,7 @@
 #include "cesium_availability.h"
 #include "cesium_route.h"
 #include "content_encoding.h"
+#include "layer_route.h"
 #include "public_url.h"
 #include "rivers_response.h"
 #include "router.h"
@@ -108,14 +109,19 @@ http::Response TileServer::metricsResponse() const {
   return r;
 }
 
-http::Response TileServer::tileJson(const ServedWorld& w, const http::Request& request) const {
+http::Response TileServer::tileJson(const ServedWorld& w, const http::Request& request,
+                                    const LayerOptions* layer) const {
   // Absolute URLs (TileJSON 3.0.0 wants them, and MapLibre fetches relative ones from a
   // worker, where they fail), never from the Host header: see requestOrigin().
   const auto origin = requestOrigin(options_.publicUrl, request);
   if (!origin)
     return http::errorResponse(400, origin.error().message);
+  const std::string base = origin.value() + "/worlds/" + w.id;
   http::Response r = jsonResponse(
-      app::tileJson(w.id, origin.value() + "/worlds/" + w.id, w.bounds, w.center), "tilejson");
+      layer ? layerTileJson(w.id, base, kLayerNames[static_cast<std::size_t>(layer->name)],
+                            layerQuery(*layer), layerDescription(layer->name), w.bounds, w.center)
+            : app::tileJson(w.id, base, w.bounds, w.center),
+      "tilejson");
   if (options_.publicUrl.empty()) // the URLs depend on these headers (from a trusted proxy)
     r.headers.emplace_back("Vary", "X-Forwarded-Proto, X-Forwarded-Host");
   return r;
@@ -181,6 +187,23 @@ void TileServer::handleWorld(const ServedWorld& w, Endpoint endpoint, const Pars
   }
   case Endpoint::kCesiumLayer:
     return done(jsonResponse(w.cesiumLayer, "cesium"));
+  case Endpoint::kLayerTileJson: {
+    if (target.query.count("size"))
+      return done(http::errorResponse(400, "a layer's TileJSON takes the layer's parameters, "
+                                           "not size"));
+    auto layer = parseLayerOptions(target.segments[3], target.query);
+    if (!layer)
+      return done(http::errorResponse(layer.error().code == base::ErrorCode::kNotFound ? 404 : 400,
+                                      layer.error().message));
+    return done(tileJson(w, request, &layer.value()));
+  }
+  case Endpoint::kLayerTile: {
+    auto parsed = parseLayerRoute(w.id, target.segments, target.query);
+    if (!parsed)
+      return done(http::errorResponse(parsed.error().code == base::ErrorCode::kNotFound ? 404 : 400,
+                                      parsed.error().message));
+    return tile(w, parsed.value(), request, std::move(done));
+  }
   case Endpoint::kCesiumTerrain: {
     auto parsed =
         parseCesiumTerrainRoute(w.id, target.segments, target.query, request.header("accept"),

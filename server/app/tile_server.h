@@ -72,7 +72,8 @@ private:
   /// The endpoints under /worlds/{id}: `endpoint` is routeOf(target.segments).
   void handleWorld(const ServedWorld& world, Endpoint endpoint, const ParsedTarget& target,
                    const http::Request& request, std::function<void(http::Response)> done);
-  http::Response tileJson(const ServedWorld& world, const http::Request& request) const;
+  http::Response tileJson(const ServedWorld& world, const http::Request& request,
+                          const LayerOptions* layer = nullptr) const;
   /// The tile pipeline, after the route became a TileRequest: grid → 304 → cache (single
   /// flight) → a worker's TileService::render → outcome → tileResponse().
   void tile(const ServedWorld& world, const TileRequest& tile, const http::Request& request,

@@ -2,6 +2,7 @@
 
 #include "cesium_terrain_renderer.h"
 #include "heightmap_renderer.h"
+#include "layer_renderer.h"
 #include "mesh_renderer.h"
 #include "relief_renderer.h"
 #include "vector_tile_renderer.h"
@@ -41,6 +42,7 @@ TileService::TileService(construction::WorldData world)
   renderers_[static_cast<std::size_t>(TileKind::kVector)] = std::make_unique<VectorTileRenderer>(
       world_, geometry::LocalProjection(world_.data().projectionCenter.x,
                                         world_.data().projectionCenter.y));
+  renderers_[static_cast<std::size_t>(TileKind::kLayer)] = std::make_unique<LayerRenderer>(world_);
 }
 
 TileService::~TileService() = default;
@@ -50,6 +52,9 @@ base::Status TileService::checkTile(const TileRequest& request) const {
     return base::makeError(base::ErrorCode::kInvalidInput,
                            "Cesium terrain tiles (.terrain) are served in the geographic pyramid "
                            "only, and only they are");
+  if (request.kind() == TileKind::kLayer && request.scheme == tiling::SchemeKind::kGeographic)
+    return base::makeError(base::ErrorCode::kInvalidInput,
+                           "layer tiles are served in the Web Mercator and local pyramids");
   const tiling::TileScheme& s = scheme(request.scheme);
   const tiling::TileId& t = request.tile;
   if (!s.contains(t))

@@ -32,7 +32,8 @@ public:
 
   /// kNotFound when the tile of `request` is outside its pyramid (the message says which zooms
   /// it has), kInvalidInput for a kind its pyramid does not serve (Cesium terrain is only, and
-  /// only, in the geographic one); cheap, so a server can refuse such a tile before queueing it.
+  /// only, in the geographic one; layer tiles are not in it); cheap, so a server can refuse such a
+  /// tile before queueing it.
   base::Status checkTile(const TileRequest& request) const;
   /// The tile, or kNotFound when it is outside the pyramid, kOutOfRange for a bad size, or the
   /// renderer's error (renderStatus() says what each means).
@@ -60,7 +61,7 @@ private:
   tiling::TileScheme local_;
   tiling::TileScheme geographic_;
   /// The renderer of each TileKind, by its value.
-  std::array<std::unique_ptr<const TileRenderer>, static_cast<std::size_t>(TileKind::kVector) + 1>
+  std::array<std::unique_ptr<const TileRenderer>, static_cast<std::size_t>(TileKind::kLayer) + 1>
       renderers_;
 };
 

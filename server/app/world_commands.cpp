@@ -2,6 +2,7 @@
 
 #include "cli_args.h"
 #include "command_support.h"
+#include "layer_route.h"
 #include "tile_service.h"
 #include "world_summary.h"
 
@@ -23,6 +24,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <set>
 #include <thread>
@@ -70,11 +72,16 @@ constexpr const char* kTileUsage =
     "usage: strahler tile WORLD.world --scheme web|local|cesium --z Z --x X --y Y\n"
     "                     --format png|terrarium|png16|tif|exr|drc|glb|relief|terrain|mvt\n"
     "                     [--size N] -o FILE\n"
+    "       strahler tile WORLD.world --scheme web|local --z Z --x X --y Y --layer NAME\n"
+    "                     [--species tree|bush] [--azimuth DEG --altitude DEG] [--size N] -o FILE\n"
     "Writes one tile. web: Web Mercator XYZ (zoom 0..18); local: the world's metric\n"
     "quadtree; cesium: Cesium's geographic TMS pyramid (Y counts rows from the south),\n"
     "format terrain only: quantized-mesh-1.0 with normals, water mask and metadata.\n"
     "png is Terrain-RGB; relief an RGB picture (height tint x hillshade);\n"
     "mvt a Mapbox Vector Tile (web only: water, contours, rivers, features).\n"
+    "--layer: a derived layer as a grey PNG (slope, aspect, illumination, hillshade,\n"
+    "humidity, sediment, vegetation, water; see the README), instead of --format;\n"
+    "--species for vegetation, --azimuth/--altitude for hillshade.\n"
     "N: pixels per side for rasters (16..1024, default 256),\n"
     "quads per side for meshes (4..256, default 64).\n";
 
@@ -148,9 +155,10 @@ int runRender(const std::vector<std::string>& raw) {
 }
 
 int runTile(const std::vector<std::string>& raw) {
-  auto opened =
-      openWorld("tile", raw, {"--scheme", "--z", "--x", "--y", "--format", "--size", "-o"},
-                kTileUsage, {"--z", "--x", "--y", "--format", "-o"});
+  auto opened = openWorld("tile", raw,
+                          {"--scheme", "--z", "--x", "--y", "--format", "--size", "-o", "--layer",
+                           "--species", "--azimuth", "--altitude"},
+                          kTileUsage, {"--z", "--x", "--y", "-o"});
   if (auto* code = std::get_if<int>(&opened))
     return *code;
   WorldCommand& c = std::get<WorldCommand>(opened);
@@ -162,7 +170,30 @@ int runTile(const std::vector<std::string>& raw) {
   auto x = c.args.getInt("--x", 0, (1ll << 30) - 1);
   auto y = c.args.getInt("--y", 0, (1ll << 30) - 1);
   auto size = c.args.getInt("--size", 1, 1 << 20);
-  auto format = parseTileFormat(c.args.get("--format").value_or(""));
+  const auto layerName = c.args.get("--layer");
+  if (layerName.has_value() == c.args.get("--format").has_value())
+    return usageError({base::ErrorCode::kInvalidInput, "give --format or --layer (one of them)"},
+                      kTileUsage);
+  base::Result<TileFormat> format = TileFormat::kLayerPng;
+  if (!layerName)
+    format = parseTileFormat(c.args.get("--format").value_or(""));
+  base::Result<LayerOptions> layer = LayerOptions{};
+  for (const char* option : {"--species", "--azimuth", "--altitude"})
+    if (!layerName && c.args.get(option))
+      return usageError({base::ErrorCode::kInvalidInput, std::string(option) + " needs --layer"},
+                        kTileUsage);
+  if (layerName) {
+    std::map<std::string, std::string> query;
+    for (const char* option : {"species", "azimuth", "altitude"})
+      if (auto value = c.args.get(std::string("--") + option))
+        query[option] = *value;
+    layer = parseLayerOptions(*layerName, query);
+    if (!layer)
+      return usageError(layer.error(), kTileUsage);
+    if (scheme == "cesium")
+      return usageError({base::ErrorCode::kInvalidInput, "--layer goes with --scheme web or local"},
+                        kTileUsage);
+  }
   for (const base::Error* e :
        {z.ok() ? nullptr : &z.error(), x.ok() ? nullptr : &x.error(), y.ok() ? nullptr : &y.error(),
         size.ok() ? nullptr : &size.error(), format.ok() ? nullptr : &format.error()})
@@ -184,6 +215,7 @@ int runTile(const std::vector<std::string>& raw) {
   }
   request.format = format.value();
   request.options.size = static_cast<int>(size.value().value_or(0));
+  request.options.layer = layer.value();
   auto tile = service.render(request);
   if (!tile)
     return fail(tile.error());

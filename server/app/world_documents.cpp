@@ -65,6 +65,24 @@ std::string tileJson(const std::string& id, const std::string& base, const LonLa
   return tj.dump();
 }
 
+std::string layerTileJson(const std::string& id, const std::string& base, const std::string& name,
+                          const std::string& query, const std::string& description,
+                          const LonLatBox& bounds, geometry::Vec2 center) {
+  const json tj = {{"tilejson", "3.0.0"},
+                   {"name", id + " " + name},
+                   {"description", description},
+                   {"version", "1.0.0"},
+                   {"scheme", "xyz"},
+                   {"tiles", {base + "/layers/" + name + "/{z}/{x}/{y}.png" + query}},
+                   {"minzoom", 0},
+                   {"maxzoom", tiling::TileScheme::kMaxWebZoom},
+                   {"bounds", {bounds.west, bounds.south, bounds.east, bounds.north}},
+                   {"center", {center.x, center.y, 9}},
+                   {"tileSize", 256},
+                   {"attribution", "strahler"}};
+  return tj.dump();
+}
+
 std::string featuresGeoJson(const input::Features& features) {
   json list = json::array();
   const auto positions = [](const std::vector<geometry::Vec2>& points) {

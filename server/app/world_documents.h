@@ -26,6 +26,13 @@ std::string worldListJson(const std::vector<const std::string*>& metadata);
 std::string tileJson(const std::string& id, const std::string& base, const LonLatBox& bounds,
                      geometry::Vec2 center);
 
+/// The TileJSON 3.0.0 document of one layer of world `id` (a MapLibre raster source):
+/// `name` its name, `query` what its tile URLs append (layerQuery()), `description` its
+/// encoding; tiles under `base` + "/layers/{name}/{z}/{x}/{y}.png".
+std::string layerTileJson(const std::string& id, const std::string& base, const std::string& name,
+                          const std::string& query, const std::string& description,
+                          const LonLatBox& bounds, geometry::Vec2 center);
+
 /// The document of GET /worlds/{id}/features.geojson: a GeoJSON FeatureCollection of what was
 /// drawn (lon/lat as drawn; "kind" and the optional elevation, radius and name), in the order
 /// mountains, ridges, rivers; empty when the world has no features. Invalid UTF-8 in a name

@@ -8,6 +8,8 @@
 //   <dir>/vector/<name>.mvt + .json                (check_mvt.mjs: the tile, and the world's
 //                                                   river lines in degrees; or, for the
 //                                                   encoder's sample, the exact content)
+//   <dir>/layers/<name>.<layer>.png + .json        (check_layers.mjs: layer tiles, the .json
+//                                                   values computed from World::height)
 #include "mesh_renderer.h"
 #include "test_worlds.h"
 #include "tile_service.h"
@@ -16,6 +18,9 @@
 #include "strahler/construction/world_builder.h"
 #include "strahler/encoding/mesh.h"
 #include "strahler/render/river_sections.h"
+#include "strahler/layers/sediment.h"
+#include "strahler/layers/sky_view.h"
+#include "strahler/layers/slope.h"
 #include "strahler/render/shaded_relief.h"
 #include "strahler/vector_tile/vector_tile.h"
 
@@ -200,6 +205,62 @@ bool encoderSample(const fs::path& dir) {
          write(dir / "encoder.json", json);
 }
 
+/// Layer tiles (slope, illumination, sediment, hillshade) and the values core/layers computes
+/// from the whole-world evaluator's heights at the same bordered samples, as the tile encodes
+/// them; `east` names the tile's east neighbour's sample, if written, for the seam check.
+bool layerTiles(const app::TileService& service, const fs::path& dir, tiling::SchemeKind scheme,
+                const tiling::TileId& tile, int size, const std::string& name,
+                const std::string& east = "") {
+  const int border = layers::SkyView::kReach + 1; // the renderer's, for the sky view of even tiles
+  const tiling::SampleGrid grid = service.scheme(scheme).borderedRasterGrid(tile, size, border);
+  const std::vector<double> heights = reference(service.world(), grid);
+  const layers::BorderedHeights h{heights, size, size, border, grid.rowSpacing};
+  std::vector<double> shade;
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const layers::Gradient g = layers::gradientAt(h, x, y);
+      shade.push_back(255.0 * render::sunIllumination(g.dzdx, g.dzdy, {}));
+    }
+  auto scaled = [](std::vector<double> v, double scale) {
+    for (double& x : v)
+      x *= scale;
+    return v;
+  };
+  const struct {
+    app::LayerName layer;
+    const char* label;
+    int depth;
+    std::vector<double> expected;
+  } samples[] = {
+      {app::LayerName::kSlope, "slope", 16, scaled(layers::slopeDegrees(h), 100.0)},
+      {app::LayerName::kIllumination, "illumination", 8,
+       scaled(layers::skyView(h, size % 2 == 0 ? 2 : 1), 255.0)},
+      {app::LayerName::kSediment, "sediment", 8, scaled(layers::sedimentThickness(h), 100.0)},
+      {app::LayerName::kHillshade, "hillshade", 8, shade},
+  };
+  for (const auto& sample : samples) {
+    app::TileRequest request{scheme, tile, app::TileFormat::kLayerPng, {size}, {}};
+    request.options.layer.name = sample.layer;
+    if (sample.layer == app::LayerName::kHillshade) {
+      request.options.layer.azimuthDeg = 315.0;
+      request.options.layer.altitudeDeg = 45.0;
+    }
+    auto rendered = service.render(request);
+    if (!rendered)
+      return false;
+    const std::string file = name + "." + sample.label;
+    const std::string json = "{\"width\":" + std::to_string(size) +
+                             ",\"height\":" + std::to_string(size) +
+                             ",\"depth\":" + std::to_string(sample.depth) + ",\"east\":\"" +
+                             (east.empty() ? "" : east + "." + sample.label) +
+                             "\",\"expected\":" + array(sample.expected) + "}\n";
+    if (!write(dir / (file + ".png"), rendered.value().bytes) ||
+        !write(dir / (file + ".json"), json))
+      return false;
+  }
+  return true;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -213,6 +274,7 @@ int main(int argc, char** argv) {
   fs::create_directories(dir / "meshes");
   fs::create_directories(dir / "relief");
   fs::create_directories(dir / "vector");
+  fs::create_directories(dir / "layers");
   const app::TileService service(
       construction::generateWorldData(test_support::defaultIslandSpec(), "samples").value());
   // Web tiles over the island's centre at a coarse and a fine zoom; local tiles inland and at the
@@ -229,7 +291,13 @@ int main(int argc, char** argv) {
       relief(service, dir / "relief", tiling::SchemeKind::kLocal, {2, 1, 2}, 64, "local-z2-1-2") &&
       vector(service, dir / "vector", {10, 434, 373}, "island-z10") &&
       vector(service, dir / "vector", {12, 1736, 1494}, "island-z12") &&
-      encoderSample(dir / "vector");
+      encoderSample(dir / "vector") &&
+      layerTiles(service, dir / "layers", tiling::SchemeKind::kWebMercator, {12, 1736, 1494}, 128,
+                 "island-z12-1736", "island-z12-1737") &&
+      layerTiles(service, dir / "layers", tiling::SchemeKind::kWebMercator, {12, 1737, 1494}, 128,
+                 "island-z12-1737") &&
+      layerTiles(service, dir / "layers", tiling::SchemeKind::kLocal, {2, 1, 2}, 64,
+                 "local-z2-1-2");
   if (!ok) {
     std::fprintf(stderr, "write_world_tile_samples: could not render or write a tile\n");
     return 1;

@@ -19,7 +19,15 @@ struct ContextDeleter {
 using Context = std::unique_ptr<spng_ctx, ContextDeleter>;
 
 std::size_t bytesPerPixel(PngLayout layout) {
-  return layout == PngLayout::kRgb8 ? 3u : 2u;
+  switch (layout) {
+  case PngLayout::kRgb8:
+    return 3u;
+  case PngLayout::kGray8:
+    return 1u;
+  case PngLayout::kGray16:
+    break;
+  }
+  return 2u;
 }
 
 int filterChoice(PngFilter filter) {
@@ -92,7 +100,7 @@ spng_ihdr headerFor(int width, int height, PngLayout layout) {
   spng_ihdr header{};
   header.width = static_cast<std::uint32_t>(width);
   header.height = static_cast<std::uint32_t>(height);
-  header.bit_depth = layout == PngLayout::kRgb8 ? 8 : 16;
+  header.bit_depth = layout == PngLayout::kGray16 ? 16 : 8;
   header.color_type =
       layout == PngLayout::kRgb8 ? SPNG_COLOR_TYPE_TRUECOLOR : SPNG_COLOR_TYPE_GRAYSCALE;
   return header;

@@ -17,6 +17,7 @@ namespace strahler::encoding::detail {
 enum class PngLayout {
   kRgb8,   ///< 3 bytes per pixel: R, G, B.
   kGray16, ///< 2 bytes per pixel, big-endian (PNG's own byte order).
+  kGray8,  ///< 1 byte per pixel (the layer tiles' 8-bit grey).
 };
 
 /// PNG row filters (RFC 2083 §6); kAdaptive lets the encoder pick one per row.
@@ -45,8 +46,8 @@ PngOptions choosePngOptions(const std::vector<std::uint8_t>& samples, int width,
                             PngLayout layout);
 
 /// Encodes rows of `samples` (top row first, width · bytes-per-pixel bytes each, no filter
-/// bytes) as an 8-bit RGB or 16-bit grey PNG with no ancillary chunks. The caller guarantees
-/// 1 ≤ width, height and samples.size() = width · height · bytes-per-pixel (asserted);
+/// bytes) as an 8-bit RGB, 16-bit grey or 8-bit grey PNG with no ancillary chunks. The caller
+/// guarantees 1 ≤ width, height and samples.size() = width · height · bytes-per-pixel (asserted);
 /// libspng failures become kInternal. Deterministic for one zlib build.
 base::Result<std::string> encodePng(const std::vector<std::uint8_t>& samples, int width, int height,
                                     PngLayout layout, const PngOptions& options);

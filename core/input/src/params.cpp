@@ -1,6 +1,7 @@
 #include "strahler/input/params.h"
 
 #include "json_util.h"
+#include "vegetation_params.h"
 
 #include <algorithm>
 #include <array>
@@ -242,6 +243,7 @@ base::Result<Params> parseParamsUnguarded(std::string_view json, const InputLimi
     known.push_back(f.name);
   known.push_back("seed");
   known.push_back("constraints");
+  known.push_back("vegetation");
 
   Params params;
   for (const auto& item : root.items()) {
@@ -260,6 +262,8 @@ base::Result<Params> parseParamsUnguarded(std::string_view json, const InputLimi
       STRAHLER_RETURN_IF_ERROR(readSeed(value, params.seed));
     } else if (key == "constraints") {
       STRAHLER_RETURN_IF_ERROR(readConstraints(value, params.constraints));
+    } else if (key == "vegetation") {
+      STRAHLER_RETURN_IF_ERROR(detail::readVegetation(value, params.vegetation));
     } else {
       return unknownKey("params: ", key, known);
     }
@@ -397,7 +401,7 @@ base::Status validateParams(const Params& p) {
                          " entries, the limit is " + std::to_string(kMaxConstraints));
   for (std::size_t i = 0; i < p.constraints.size(); ++i)
     STRAHLER_RETURN_IF_ERROR(checkConstraint(p.constraints[i], i));
-  return base::Ok{};
+  return detail::checkVegetation(p.vegetation);
 }
 
 base::Result<Params> parseParams(std::string_view json, const InputLimits& limits) {
@@ -433,7 +437,7 @@ std::string canonicalJson(const Params& params) {
            formatNumber(c.bounds.west) + "," + formatNumber(c.bounds.south) + "," +
            formatNumber(c.bounds.east) + "," + formatNumber(c.bounds.north) + "]}";
   }
-  return out + "]}";
+  return out + "]" + detail::vegetationJson(params.vegetation) + "}";
 }
 
 } // namespace strahler::input

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <numbers>
 
 namespace strahler::render {
 namespace {
@@ -39,13 +40,31 @@ Colour hypsometricTint(double h) {
   return std::end(kLand)[-1].c;
 }
 
+namespace {
+
+/// The relief's vertical exaggeration in every hillshade.
+constexpr double kExaggeration = 2.0;
+
+/// n · (light.x, light.y, rise) / |n|, n the normal of the exaggerated ground: the one
+/// Lambertian term of both hillshades.
+double lambert(double dzdx, double dzdy, geometry::Vec2 light, double rise) {
+  const double nx = -dzdx * kExaggeration, ny = -dzdy * kExaggeration;
+  return (nx * light.x + ny * light.y + rise) / std::sqrt(nx * nx + ny * ny + 1.0);
+}
+
+} // namespace
+
 double hillshade(double dzdx, double dzdy) {
   // The sun's horizontal direction; its vertical component equals that length (altitude 45°).
   const geometry::Vec2 light = geometry::normalize(geometry::Vec2{-1.0, 1.0});
-  const double exaggeration = 2.0;
-  const double nx = -dzdx * exaggeration, ny = -dzdy * exaggeration;
-  return std::clamp((nx * light.x + ny * light.y + 1.0) / std::sqrt(nx * nx + ny * ny + 1.0) * 0.75,
-                    0.0, 1.2);
+  return std::clamp(lambert(dzdx, dzdy, light, 1.0) * 0.75, 0.0, 1.2);
+}
+
+double sunIllumination(double dzdx, double dzdy, const Sun& sun) {
+  constexpr double kRadians = std::numbers::pi / 180.0;
+  const double az = sun.azimuthDeg * kRadians, alt = sun.altitudeDeg * kRadians;
+  const geometry::Vec2 light{std::sin(az) * std::cos(alt), std::cos(az) * std::cos(alt)};
+  return std::clamp(lambert(dzdx, dzdy, light, std::sin(alt)), 0.0, 1.0);
 }
 
 Colour reliefColour(double h, double shade) {

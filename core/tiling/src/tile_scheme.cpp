@@ -96,9 +96,15 @@ SampleGrid TileScheme::rasterGrid(const TileId& tile, int size) const {
 }
 
 SampleGrid TileScheme::borderedRasterGrid(const TileId& tile, int size) const {
-  // Global index tile·size + k − 0.5 is exact in double, as tile·size + k + 0.5 is.
-  return kind_ == SchemeKind::kLocal ? localGrid(tile, size, size + 2, -0.5, true)
-                                     : webGrid(tile, size, size + 2, -0.5, true);
+  return borderedRasterGrid(tile, size, 1);
+}
+
+SampleGrid TileScheme::borderedRasterGrid(const TileId& tile, int size, int border) const {
+  // Global index tile·size + k + 0.5 − border is exact in double, as tile·size + k + 0.5 is.
+  const double first = 0.5 - border;
+  const int count = size + 2 * border;
+  return kind_ == SchemeKind::kLocal ? localGrid(tile, size, count, first, true)
+                                     : webGrid(tile, size, count, first, true);
 }
 
 SampleGrid TileScheme::meshGrid(const TileId& tile, int quads) const {

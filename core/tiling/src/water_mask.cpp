@@ -1,8 +1,11 @@
 #include "strahler/tiling/water_mask.h"
 
+#include "strahler/tiling/river_segments.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace strahler::tiling {
 namespace {
@@ -11,16 +14,6 @@ using geometry::Aabb;
 using geometry::Vec2;
 
 constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
-
-/// Distance² from p to the segment [a, b].
-double distance2ToSegment(Vec2 p, Vec2 a, Vec2 b) noexcept {
-  const Vec2 ab = b - a;
-  const double l2 = ab.x * ab.x + ab.y * ab.y;
-  const double t =
-      l2 > 0.0 ? std::clamp(((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / l2, 0.0, 1.0) : 0.0;
-  const Vec2 d = p - (a + ab * t);
-  return d.x * d.x + d.y * d.y;
-}
 
 /// The box of the points.
 Aabb boundsOf(const std::vector<Vec2>& points) {
@@ -34,6 +27,18 @@ Aabb boundsOf(const std::vector<Vec2>& points) {
 
 WaterMask::WaterMask(const construction::World& world, const geometry::LocalProjection& projection)
     : world_(world), projection_(projection) {}
+
+std::optional<std::uint8_t> WaterMask::uniform(const Aabb& outline, double cell) const {
+  const geometry::PolygonIndex& land = world_.land();
+  const double reach = 0.5 * geometry::length(outline.size()) * (1.0 + 1e-9) + 1e-6;
+  if (land.distanceToBoundary(outline.center(), reach) >= reach) {
+    if (!land.contains(outline.center()))
+      return kWater; // all sea or all lake
+    if (!anyRiver(outline, cell))
+      return std::uint8_t{0};
+  }
+  return std::nullopt;
+}
 
 std::vector<std::uint8_t> WaterMask::of(const Aabb& lonLat) const {
   constexpr auto kCells = static_cast<std::size_t>(kSize) * kSize;
@@ -51,14 +56,8 @@ std::vector<std::uint8_t> WaterMask::of(const Aabb& lonLat) const {
       outline.add(projection_.forward(p));
   }
   outline = outline.expanded(0.01 * std::max(outline.size().x, outline.size().y));
-  const geometry::PolygonIndex& land = world_.land();
-  const double reach = 0.5 * geometry::length(outline.size()) * (1.0 + 1e-9) + 1e-6;
-  if (land.distanceToBoundary(outline.center(), reach) >= reach) {
-    if (!land.contains(outline.center()))
-      return {kWater}; // all sea or all lake
-    if (!anyRiver(outline, cell))
-      return {0};
-  }
+  if (const auto all = uniform(outline, cell))
+    return {*all};
 
   std::vector<double> lons(kSize), lats(kSize);
   for (int k = 0; k < kSize; ++k) {
@@ -68,10 +67,36 @@ std::vector<std::uint8_t> WaterMask::of(const Aabb& lonLat) const {
   std::vector<Vec2> cells;
   projection_.forwardGrid(lons, lats, cells);
   std::vector<std::uint8_t> mask(kCells, 0);
-  addSeaAndLakes(cells, mask);
+  addSeaAndLakes(cells, kSize, kSize, mask);
   addRivers(lonLat, cell, cells, mask);
   if (std::all_of(mask.begin(), mask.end(), [&](std::uint8_t v) { return v == mask[0]; }))
     return {mask[0]};
+  return mask;
+}
+
+std::vector<std::uint8_t> WaterMask::ofGrid(const SampleGrid& grid) const {
+  const auto count = static_cast<std::size_t>(grid.width) * static_cast<std::size_t>(grid.height);
+  const double finest = *std::min_element(grid.rowSpacing.begin(), grid.rowSpacing.end());
+  const Aabb outline =
+      grid.bounds.expanded(0.01 * std::max(grid.bounds.size().x, grid.bounds.size().y));
+  if (const auto all = uniform(outline, finest))
+    return std::vector<std::uint8_t>(count, *all);
+  std::vector<std::uint8_t> mask(count, 0);
+  addSeaAndLakes(grid.points, grid.width, grid.height, mask);
+  const GridRows rows(grid);
+  const auto width = static_cast<std::size_t>(grid.width);
+  forEachRiverSegment(world_, grid.bounds, finest, 0.0, [&](const RiverSegment& s) {
+    Aabb box;
+    box.add(s.a);
+    box.add(s.b);
+    rows.forEachIn(box.expanded(s.halfWidth), [&](std::size_t j, std::size_t i) {
+      // Per sample, by its own row's spacing, so that neighbouring tiles agree.
+      const std::size_t k = j * width + i;
+      if (2.0 * s.halfWidth >= grid.rowSpacing[j] &&
+          distance2ToSegment(grid.points[k], s.a, s.b) <= s.halfWidth * s.halfWidth)
+        mask[k] = kWater;
+    });
+  });
   return mask;
 }
 
@@ -91,32 +116,34 @@ bool WaterMask::anyRiver(const Aabb& local, double width) const {
   return false;
 }
 
-void WaterMask::addSeaAndLakes(const std::vector<Vec2>& cells,
+void WaterMask::addSeaAndLakes(const std::vector<Vec2>& cells, int width, int height,
                                std::vector<std::uint8_t>& mask) const {
   // Blocks of kBlock² cells with no shore near are filled whole; the others ask cell by cell.
   constexpr int kBlock = 16;
   const geometry::PolygonIndex& land = world_.land();
-  for (int bj = 0; bj < kSize; bj += kBlock)
-    for (int bi = 0; bi < kSize; bi += kBlock) {
+  for (int bj = 0; bj < height; bj += kBlock)
+    for (int bi = 0; bi < width; bi += kBlock) {
       const auto at = [&](int i, int j) {
-        return static_cast<std::size_t>(j) * kSize + static_cast<std::size_t>(i);
+        return static_cast<std::size_t>(j) * static_cast<std::size_t>(width) +
+               static_cast<std::size_t>(i);
       };
+      const int ei = std::min(bi + kBlock, width), ej = std::min(bj + kBlock, height);
       Aabb block;
-      for (int j = bj; j < bj + kBlock; ++j) {
+      for (int j = bj; j < ej; ++j) {
         block.add(cells[at(bi, j)]);
-        block.add(cells[at(bi + kBlock - 1, j)]);
+        block.add(cells[at(ei - 1, j)]);
       }
-      for (int i = bi; i < bi + kBlock; ++i) {
+      for (int i = bi; i < ei; ++i) {
         block.add(cells[at(i, bj)]);
-        block.add(cells[at(i, bj + kBlock - 1)]);
+        block.add(cells[at(i, ej - 1)]);
       }
       // No shore within the block's half diagonal of its centre: one side of it throughout.
       const Vec2 centre = block.center();
       const double reach = 0.5 * geometry::length(block.size()) * (1.0 + 1e-9) + 1e-6;
       const bool clear = land.distanceToBoundary(centre, reach) >= reach;
       const bool blockInside = clear && land.contains(centre);
-      for (int j = bj; j < bj + kBlock; ++j)
-        for (int i = bi; i < bi + kBlock; ++i) {
+      for (int j = bj; j < ej; ++j)
+        for (int i = bi; i < ei; ++i) {
           const bool inside = clear ? blockInside : land.contains(cells[at(i, j)]);
           mask[at(i, j)] = inside ? 0 : kWater;
         }
@@ -127,52 +154,33 @@ void WaterMask::addRivers(const Aabb& lonLat, double cellMetres, const std::vect
                           std::vector<std::uint8_t>& mask) const {
   const Vec2 cellDegrees = lonLat.size() * (1.0 / kSize);
   const Aabb box = boundsOf(cells);
-  const auto& rivers = world_.data().rivers;
-  for (std::size_t r = 0; r < rivers.size(); ++r) {
-    const primitives::RiverPrimitive& river = rivers[r];
-    if (std::max(river.widthUp, river.widthDown) < cellMetres ||
-        !world_.riverSupport(base::PrimitiveId(static_cast<std::uint32_t>(r))).intersects(box))
-      continue;
-    // Width varies linearly along the curve with the distance travelled.
-    double length = 0.0;
-    for (std::size_t k = 1; k < river.curve.size(); ++k)
-      length += geometry::distance(river.curve[k].position, river.curve[k - 1].position);
-    double travelled = 0.0;
-    for (std::size_t k = 1; k < river.curve.size(); ++k) {
-      const Vec2 a = river.curve[k - 1].position, b = river.curve[k].position;
-      const double step = geometry::distance(a, b);
-      const double t = length > 0.0 ? (travelled + 0.5 * step) / length : 0.0;
-      travelled += step;
-      const double half = 0.5 * (river.widthUp + t * (river.widthDown - river.widthUp));
-      if (2.0 * half < cellMetres)
-        continue;
-      Aabb segment;
-      segment.add(a);
-      segment.add(b);
-      segment = segment.expanded(half);
-      if (!segment.intersects(box))
-        continue;
-      // The cells the segment's box may cover: its corners' longitudes and latitudes, one
-      // cell of margin for the projection's curvature.
-      Aabb corners;
-      for (Vec2 c : {segment.min, segment.max, Vec2{segment.min.x, segment.max.y},
-                     Vec2{segment.max.x, segment.min.y}})
-        corners.add(projection_.inverse(c));
-      const auto index = [](double v) {
-        return static_cast<int>(std::clamp(std::floor(v), -1.0, double{kSize}));
-      };
-      const int i0 = std::max(0, index((corners.min.x - lonLat.min.x) / cellDegrees.x) - 1);
-      const int i1 = std::min(kSize - 1, index((corners.max.x - lonLat.min.x) / cellDegrees.x) + 1);
-      const int j0 = std::max(0, index((lonLat.max.y - corners.max.y) / cellDegrees.y) - 1);
-      const int j1 = std::min(kSize - 1, index((lonLat.max.y - corners.min.y) / cellDegrees.y) + 1);
-      for (int j = j0; j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i) {
-          const auto c = static_cast<std::size_t>(j) * kSize + static_cast<std::size_t>(i);
-          if (mask[c] != kWater && distance2ToSegment(cells[c], a, b) <= half * half)
-            mask[c] = kWater;
-        }
-    }
-  }
+  forEachRiverSegment(world_, box, cellMetres, 0.0, [&](const RiverSegment& s) {
+    const Vec2 a = s.a, b = s.b;
+    const double half = s.halfWidth;
+    Aabb segment;
+    segment.add(a);
+    segment.add(b);
+    segment = segment.expanded(half);
+    // The cells the segment's box may cover: its corners' longitudes and latitudes, one
+    // cell of margin for the projection's curvature.
+    Aabb corners;
+    for (Vec2 c : {segment.min, segment.max, Vec2{segment.min.x, segment.max.y},
+                   Vec2{segment.max.x, segment.min.y}})
+      corners.add(projection_.inverse(c));
+    const auto index = [](double v) {
+      return static_cast<int>(std::clamp(std::floor(v), -1.0, double{kSize}));
+    };
+    const int i0 = std::max(0, index((corners.min.x - lonLat.min.x) / cellDegrees.x) - 1);
+    const int i1 = std::min(kSize - 1, index((corners.max.x - lonLat.min.x) / cellDegrees.x) + 1);
+    const int j0 = std::max(0, index((lonLat.max.y - corners.max.y) / cellDegrees.y) - 1);
+    const int j1 = std::min(kSize - 1, index((lonLat.max.y - corners.min.y) / cellDegrees.y) + 1);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i) {
+        const auto c = static_cast<std::size_t>(j) * kSize + static_cast<std::size_t>(i);
+        if (mask[c] != kWater && distance2ToSegment(cells[c], a, b) <= half * half)
+          mask[c] = kWater;
+      }
+  });
 }
 
 } // namespace strahler::tiling

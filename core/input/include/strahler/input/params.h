@@ -3,7 +3,9 @@
 #include "strahler/base/result.h"
 #include "strahler/input/limits.h"
 
+#include <array>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,6 +42,20 @@ struct ConstraintSource {
 
 /// At most this many constraint images per world.
 inline constexpr std::size_t kMaxConstraints = 16;
+
+/// One species' response curves in params.json, each a trapezoid [rise0, rise1, fall1, fall0]
+/// (layers::ResponseCurve): finite, non-decreasing, in [0, 10000].
+struct SpeciesCurves {
+  std::array<double, 4> sediment{};     ///< C_S of the sediment thickness, m.
+  std::array<double, 4> illumination{}; ///< C_I of the sky view, 0 … 1.
+  std::array<double, 4> humidity{};     ///< C_H of the humidity, 0 … 1.
+
+  /// Exact comparison.
+  bool operator==(const SpeciesCurves&) const = default;
+};
+
+/// The species whose curves params.json may set (core/layers' layers::kSpecies names).
+inline constexpr const char* kVegetationSpecies[] = {"tree", "bush"};
 
 /// Every knob of the generation method (Génevaux et al. 2013, Sections 4-5), with the
 /// defaults used when params.json leaves it out. Lengths in metres, slopes in m/m, angles in
@@ -98,6 +114,13 @@ struct Params {
   /// Left out of the canonical JSON when 0, so worlds without it keep their cache keys.
   /// Costly: a tile takes about 13 times the CPU (docs/performance.md).
   int tributaryLevels = 0;
+
+  // --- Vegetation layer (issue 28) ---
+  /// The vegetation layer's response curves by species, replacing core/layers' defaults
+  /// (layers::kSpecies) for the species named; empty: the defaults. JSON: "vegetation":
+  /// {"tree": {"sediment": [r0, r1, f1, f0], "illumination": [...], "humidity": [...]}, ...}.
+  /// Left out of the canonical JSON when empty, so worlds without it keep their cache keys.
+  std::map<std::string, SpeciesCurves> vegetation;
 
   std::uint64_t seed = 1; ///< Seed of every random choice; JSON: an integer, or a decimal string.
 

@@ -21,6 +21,17 @@ Colour hypsometricTint(double heightM);
 /// ground, up to 0.75·√2 ≈ 1.06 facing the sun, down to 0 facing away from it.
 double hillshade(double dzdx, double dzdy);
 
+/// A sun for sunIllumination(): where it stands, degrees.
+struct Sun {
+  double azimuthDeg = 315.0; ///< Clockwise from north, 0 … 360.
+  double altitudeDeg = 45.0; ///< Above the horizon, 0 … 90.
+};
+
+/// Lambertian illumination of ground with slope (`dzdx` east, `dzdy` north, m per m) by `sun`,
+/// relief exaggerated 2× as in hillshade() (the same Lambertian term): cos of the angle between
+/// the ground's normal and the sun, clamped to 0 … 1 (sin(altitude) on flat ground).
+double sunIllumination(double dzdx, double dzdy, const Sun& sun);
+
 /// One pixel: the tint of `heightM` times `shade` (hillshade()) on land, clamped to 0..255; the
 /// water tint unshaded below 0 m.
 Colour reliefColour(double heightM, double shade);

@@ -76,6 +76,11 @@ public:
   /// rasterGrid() with a one-pixel border, (size+2)²: sample (i+1, j+1) is rasterGrid's (i, j)
   /// bit for bit, and the border holds the neighbouring tiles' edge pixels (for slopes).
   SampleGrid borderedRasterGrid(const TileId& tile, int size) const;
+  /// rasterGrid() with a border of `border` ≥ 1 pixels, (size + 2·border)²: sample
+  /// (i + border, j + border) is rasterGrid's (i, j) bit for bit, the border the neighbouring
+  /// tiles' pixels (for layers that look beyond the tile, such as the sky view). kLocal and
+  /// kWebMercator only.
+  SampleGrid borderedRasterGrid(const TileId& tile, int size, int border) const;
   /// Bordered vertex samples of a mesh tile with `quads`×`quads` quads.
   SampleGrid meshGrid(const TileId& tile, int quads) const;
   /// The mesh frame of a tile: south-west corner and vertex spacing, in the scheme's own

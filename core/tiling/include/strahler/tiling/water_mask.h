@@ -3,8 +3,10 @@
 #include "strahler/construction/world.h"
 #include "strahler/geometry/aabb.h"
 #include "strahler/geometry/projection.h"
+#include "strahler/tiling/tile_scheme.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace strahler::tiling {
@@ -25,10 +27,18 @@ public:
   /// all land or all water, else kSize² bytes, row 0 north, column 0 west, each the value at
   /// its cell's centre.
   std::vector<std::uint8_t> of(const geometry::Aabb& lonLat) const;
+  /// The mask at the samples of `grid` (a raster grid: rows of points running west to east):
+  /// grid.width · grid.height bytes, 0 or kWater, with the rivers at least as wide as the
+  /// sample's row spacing. A function of each sample alone: grids sharing samples agree.
+  std::vector<std::uint8_t> ofGrid(const SampleGrid& grid) const;
 
 private:
-  /// Sets the cells of `mask` off the land (sea and lakes) to kWater.
-  void addSeaAndLakes(const std::vector<geometry::Vec2>& cells,
+  /// kWater or 0 when the local box `outline` is all water or all land (no shore near, no
+  /// river `cell` m wide), else nothing.
+  std::optional<std::uint8_t> uniform(const geometry::Aabb& outline, double cell) const;
+  /// Sets the cells of `mask` (`width` × `height`, row-major) off the land (sea and lakes) to
+  /// kWater.
+  void addSeaAndLakes(const std::vector<geometry::Vec2>& cells, int width, int height,
                       std::vector<std::uint8_t>& mask) const;
   /// A cell's side (m): the mean of its north-south and, at the box's middle latitude,
   /// east-west extents. A river shows when it is at least that wide.

@@ -1,0 +1,87 @@
+// `strahler tile --layer NAME` (issue 28): a layer tile as the server's layers/{name}/ serves it,
+// and the command line's refusals (an unknown layer, a parameter the layer does not take,
+// --format and --layer together, a layer in the Cesium pyramid).
+#include "program_run.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using strahler::test_support::ProcessRun;
+using strahler::test_support::runProgram;
+
+fs::path scratchDir() {
+  return strahler::test_support::processScratchDir(
+      fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch", "tile-command");
+}
+
+ProcessRun run(const std::string& args) {
+  return runProgram(STRAHLER_EXECUTABLE, args, scratchDir());
+}
+
+/// The default island's world file, generated once per test process.
+const fs::path& world() {
+  static const fs::path path = [] {
+    const fs::path file = scratchDir() / "island.world";
+    const ProcessRun generated = run("generate --quiet -o " + file.string());
+    EXPECT_EQ(generated.exitCode, 0) << generated.err;
+    return file;
+  }();
+  return path;
+}
+
+std::string tileArgs(const std::string& rest, const fs::path& out) {
+  return "tile " + world().string() + " --scheme web --z 12 --x 1736 --y 1494 " + rest + " -o " +
+         out.string();
+}
+
+/// Bit depth and colour type from a PNG's IHDR (0s if not a PNG).
+std::pair<int, int> depthAndColour(const std::string& png) {
+  if (png.size() < 33 || png.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0)
+    return {0, 0};
+  return {static_cast<unsigned char>(png[24]), static_cast<unsigned char>(png[25])};
+}
+
+TEST(TileCommand, WritesLayerTilesAsGreyPngs) {
+  const fs::path slope = scratchDir() / "slope.png", bush = scratchDir() / "bush.png",
+                 shade = scratchDir() / "shade.png";
+  const ProcessRun a = run(tileArgs("--layer slope", slope));
+  ASSERT_EQ(a.exitCode, 0) << a.err;
+  EXPECT_EQ(depthAndColour(strahler::test_support::readWholeFile(slope)), std::make_pair(16, 0));
+  const ProcessRun b = run(tileArgs("--layer vegetation --species bush --size 64", bush));
+  ASSERT_EQ(b.exitCode, 0) << b.err;
+  EXPECT_EQ(depthAndColour(strahler::test_support::readWholeFile(bush)), std::make_pair(8, 0));
+  const ProcessRun c = run(tileArgs("--layer hillshade --azimuth 270 --altitude 30", shade));
+  ASSERT_EQ(c.exitCode, 0) << c.err;
+  EXPECT_EQ(depthAndColour(strahler::test_support::readWholeFile(shade)), std::make_pair(8, 0));
+}
+
+TEST(TileCommand, RefusesBadLayerRequestsNamingTheProblem) {
+  const fs::path out = scratchDir() / "bad.png";
+  const std::pair<std::string, std::string> cases[] = {
+      {"--layer snow", "unknown layer 'snow'"},
+      {"--layer slope --azimuth 90", "hillshade layer only"},
+      {"--layer hillshade --azimuth 360", "azimuth must be in [0, 360)"},
+      {"--layer vegetation --species oak", "unknown species 'oak'"},
+      {"--format png --layer slope", "give --format or --layer"},
+      {"--format png --species tree", "--species needs --layer"},
+      {"", "give --format or --layer"},
+  };
+  for (const auto& [args, message] : cases) {
+    const ProcessRun r = run(tileArgs(args, out));
+    EXPECT_NE(r.exitCode, 0) << args;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
+  }
+  const ProcessRun cesium =
+      run("tile " + world().string() + " --scheme cesium --z 2 --x 1 --y 1 --layer slope -o " +
+          out.string());
+  EXPECT_NE(cesium.exitCode, 0);
+  EXPECT_NE(cesium.err.find("--layer goes with --scheme web or local"), std::string::npos)
+      << cesium.err;
+}
+
+} // namespace
