@@ -13,35 +13,9 @@
 import fs from "node:fs";
 import path from "node:path";
 
+import { runPngSamples, seamTile } from "./png_samples.mjs";
+
 const TOLERANCE = 1; // per channel: heights from two evaluators may truncate differently
-
-async function loadPng() {
-  try {
-    return (await import("pngjs")).PNG;
-  } catch (error) {
-    console.error(
-      `FAIL: cannot load pngjs (${error.message}).\n` +
-        "Install the test decoders first: npm ci --prefix tests/node",
-    );
-    process.exit(1);
-  }
-}
-
-/** The mean absolute colour step between column `a` of `left` and column `b` of `right`. */
-function columnStep(left, a, right, b) {
-  let sum = 0;
-  for (let y = 0; y < left.height; ++y)
-    for (let k = 0; k < 3; ++k)
-      sum += Math.abs(left.data[4 * (y * left.width + a) + k] - right.data[4 * (y * right.width + b) + k]);
-  return sum / (3 * left.height);
-}
-
-/** The largest column step inside a decoded tile. */
-function largestInsideStep(png) {
-  let largest = 0;
-  for (let x = 0; x + 1 < png.width; ++x) largest = Math.max(largest, columnStep(png, x, png, x + 1));
-  return largest;
-}
 
 function checkSample(PNG, dir, name) {
   const expected = JSON.parse(fs.readFileSync(path.join(dir, `${name}.json`), "utf8"));
@@ -54,7 +28,7 @@ function checkSample(PNG, dir, name) {
   const rgb = fs.readFileSync(path.join(dir, `${name}.rgb`));
   if (rgb.length !== expected.width * expected.height * 3)
     problems.push(`${rgb.length} expected bytes for ${expected.width}x${expected.height}`);
-  if (problems.length) return { problems, png };
+  if (problems.length) return { problems };
   let bad = 0;
   let maxError = 0;
   for (let i = 0; i < png.width * png.height; ++i)
@@ -68,61 +42,7 @@ function checkSample(PNG, dir, name) {
         );
     }
   if (bad > 5) problems.push(`... ${bad} channels out of tolerance in all`);
-  return { problems, png, maxError, east: expected.east };
+  return { problems, tile: seamTile(png, 3), maxError, east: expected.east };
 }
 
-async function main() {
-  const dir = process.argv[2];
-  if (!dir || !fs.existsSync(dir)) {
-    console.error(`FAIL: sample folder "${dir ?? ""}" not found (run write_world_tile_samples first)`);
-    process.exit(1);
-  }
-  const PNG = await loadPng();
-  const names = fs
-    .readdirSync(dir)
-    .filter((f) => f.endsWith(".png"))
-    .map((f) => f.replace(/\.png$/, ""))
-    .sort();
-  const results = new Map();
-  let failures = 0;
-  for (const name of names) {
-    let result;
-    try {
-      result = checkSample(PNG, dir, name);
-    } catch (error) {
-      result = { problems: [error.message] };
-    }
-    results.set(name, result);
-    const ok = result.problems.length === 0;
-    failures += ok ? 0 : 1;
-    console.log(`${ok ? "ok  " : "FAIL"} ${name}.png  max channel error ${result.maxError ?? NaN}`);
-    for (const problem of result.problems) console.log(`       ${problem}`);
-  }
-  let seams = 0;
-  for (const [name, result] of results) {
-    if (!result.east || result.problems.length) continue;
-    const east = results.get(result.east);
-    if (!east || !east.png) {
-      console.log(`FAIL ${name}: its east neighbour ${result.east} was not written`);
-      ++failures;
-      continue;
-    }
-    const seam = columnStep(result.png, result.png.width - 1, east.png, 0);
-    const inside = Math.max(largestInsideStep(result.png), largestInsideStep(east.png));
-    const ok = inside > 0 && seam <= inside;
-    failures += ok ? 0 : 1;
-    ++seams;
-    console.log(
-      `${ok ? "ok  " : "FAIL"} ${name} | ${result.east}: colour step across the seam ` +
-        `${seam.toFixed(2)}, largest inside ${inside.toFixed(2)}`,
-    );
-  }
-  if (names.length === 0 || seams === 0) {
-    console.error(`FAIL: no relief samples (or no neighbours) in ${dir}`);
-    process.exit(1);
-  }
-  console.log(`${names.length - failures}/${names.length} relief tiles decode as expected`);
-  process.exit(failures === 0 ? 0 : 1);
-}
-
-await main();
+await runPngSamples("relief", checkSample);
