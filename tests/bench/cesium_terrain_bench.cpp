@@ -2,11 +2,9 @@
 // normals and water mask (target ≤ 3 ms on one core), with and without the extensions, beside a
 // 256² Terrain-RGB heightmap tile of the same zoom as the baseline of the same run. Run with
 // `taskset -c 1 build/release/tests/bench/strahler_cesium_bench`.
-#include "test_worlds.h"
-#include "tile_service.h"
+#include "mallorca_service.h"
 #include "web_tiles.h"
 
-#include "strahler/construction/world_builder.h"
 #include "strahler/tiling/water_mask.h"
 
 #include <benchmark/benchmark.h>
@@ -17,13 +15,9 @@ namespace strahler {
 namespace {
 
 const app::TileService& service() {
-  static const app::TileService s(
-      construction::generateWorldData(test_support::mallorcaSpec(), "bench").value());
-  return s;
+  return bench::mallorcaService();
 }
-
-/// The centre of Mallorca's Serra de Tramuntana (its highest relief).
-constexpr double kLon = 2.75, kLat = 39.78;
+constexpr double kLon = bench::kTramuntanaLon, kLat = bench::kTramuntanaLat;
 
 app::TileRequest terrainRequest(int z, unsigned extensions) {
   const double side = 180.0 / std::ldexp(1.0, z);

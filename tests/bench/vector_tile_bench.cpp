@@ -3,12 +3,9 @@
 // 258² contour grid alone, and a 256² Terrain-RGB heightmap tile of the same zoom as the
 // baseline of the same run. Run with `taskset -c 1
 // build/release/tests/bench/strahler_vector_bench`.
-#include "test_worlds.h"
-#include "tile_service.h"
+#include "mallorca_service.h"
 #include "vector_layers.h"
 #include "web_tiles.h"
-
-#include "strahler/construction/world_builder.h"
 
 #include <benchmark/benchmark.h>
 
@@ -16,13 +13,9 @@ namespace strahler {
 namespace {
 
 const app::TileService& service() {
-  static const app::TileService s(
-      construction::generateWorldData(test_support::mallorcaSpec(), "bench").value());
-  return s;
+  return bench::mallorcaService();
 }
-
-/// The centre of Mallorca's Serra de Tramuntana (its highest relief).
-constexpr double kLon = 2.75, kLat = 39.78;
+constexpr double kLon = bench::kTramuntanaLon, kLat = bench::kTramuntanaLat;
 
 app::TileRequest request(app::TileFormat format, int z) {
   app::TileRequest r;
