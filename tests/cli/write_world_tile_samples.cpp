@@ -17,10 +17,10 @@
 
 #include "strahler/construction/world_builder.h"
 #include "strahler/encoding/mesh.h"
-#include "strahler/render/river_sections.h"
 #include "strahler/layers/sediment.h"
 #include "strahler/layers/sky_view.h"
 #include "strahler/layers/slope.h"
+#include "strahler/render/river_sections.h"
 #include "strahler/render/shaded_relief.h"
 #include "strahler/vector_tile/vector_tile.h"
 
