@@ -48,8 +48,10 @@ export const OVERLAYS = [
   {
     id: 'illumination', layer: 'illumination', query: '', label: 'Illumination (sky view)', unit: '', opacity: 0.7,
     note: 'share of the sky seen',
-    value: share, codes: 256, ticks: [0, 0.5, 1],
-    colour: ramp([[0, [20, 20, 60, 1]], [0.5, [120, 110, 150, 1]], [0.8, [230, 210, 160, 1]], [1, [255, 250, 220, 1]]]),
+    value: share, codes: 256, ticks: [0, 0.6, 0.8, 1],
+    // Most ground sees more than half its sky: the ramp spends its contrast there.
+    colour: ramp([[0, [20, 20, 60, 1]], [0.6, [70, 60, 110, 1]], [0.8, [170, 150, 150, 1]], [0.9, [235, 215, 165, 1]],
+      [1, [255, 250, 225, 1]]]),
   },
   {
     id: 'humidity', layer: 'humidity', query: '', label: 'Humidity', unit: '', opacity: 0.7,

@@ -285,8 +285,97 @@ describe('map viewer over a PMTiles archive (?pmtiles=URL, any static server)', 
     assert.equal(state.hillshade, 'hillshade');
     assert.ok(Number.isFinite(state.elevation), `no terrain elevation at the centre: ${state.elevation}`);
     assert.match(state.info, /^default · \d+ km²/, 'the name and land area from the archive metadata');
+    assert.equal(await page.isVisible('#layers'), false, 'an archive has no layer or vector tiles: no switcher');
     assertNotBlank(await page.locator('#map canvas').screenshot(), 'the map canvas');
     writeFileSync(join(SCREENSHOTS, 'viewer-pmtiles.png'), await page.screenshot());
+  });
+});
+
+describe('map viewer layers, contours and rivers from the vector tiles (?rivers=vector)', () => {
+  let page, record;
+  const OVERLAYS = ['slope', 'illumination', 'humidity', 'vegetation-tree', 'vegetation-bush', 'water'];
+
+  // Runs `action` (clicks in the page), then waits until the map is idle again.
+  async function thenIdle(action) {
+    await page.evaluate(() => {
+      window.strahlerIdleAgain = new Promise((resolve) => window.strahlerMap.once('idle', resolve));
+    });
+    await action();
+    await page.evaluate((ms) => Promise.race([window.strahlerIdleAgain,
+      new Promise((resolve, reject) => setTimeout(() => reject(new Error('the map never became idle')), ms))]), STEP_MS);
+  }
+
+  before(async () => {
+    // The default world is small enough for rivers.geojson; ?rivers=vector takes the large
+    // worlds' path. Zoom 12 over the centre: contours every 50 m, every river order. A small
+    // window, seen from above, keeps the layer tiles to compute few (6 layers × ~12 tiles).
+    const [lon, lat] = (await (await fetch(`${server.url}/worlds`)).json())[0].center;
+    ({ page, record } = await openPage(browser, `${server.url}/?rivers=vector#12/${lat.toFixed(4)}/${(lon - 0.01).toFixed(4)}/0/0`,
+      { width: 800, height: 560 }));
+    await waitForIdleMap(page);
+  }, { timeout: 2 * STEP_MS });
+
+  after(() => page?.close());
+
+  test('draws the rivers of the vector tiles, not rivers.geojson', async () => {
+    assertNoErrors(record);
+    const mvt = record.responses.filter((r) => /\/vector\/\d+\/\d+\/\d+\.mvt$/.test(r.url));
+    assert.ok(mvt.length >= 1, 'no vector tile was requested');
+    for (const tile of mvt) assert.equal(tile.status, 200, tile.url);
+    assert.equal(record.responses.filter((r) => /rivers\.geojson/.test(r.url)).length, 0, 'fetched rivers.geojson');
+    const state = await page.evaluate(() => {
+      const map = window.strahlerMap;
+      const rivers = map.queryRenderedFeatures({ layers: ['rivers'] });
+      return { source: map.getLayer('rivers')?.source, count: rivers.length, orders: rivers.map((f) => f.properties.order) };
+    });
+    assert.equal(state.source, 'vector');
+    assert.ok(state.count > 0, 'no river of the vector tiles is rendered');
+    assert.ok(state.orders.every(Number.isInteger), `rivers without an order: ${state.orders}`);
+  });
+
+  test('each derived layer: its tiles answer 200, carry more than one value and colour the map', async () => {
+    assert.equal(await page.isVisible('#layers'), true, 'the layer switcher is hidden');
+    const canvas = page.locator('#map canvas');
+    const before = await canvas.screenshot(); // no overlay; each one is switched off after its turn
+    let previous = null;
+    for (const id of OVERLAYS) {
+      await thenIdle(async () => {
+        if (previous) await page.click(`#overlay-${previous}`);
+        await page.click(`#overlay-${id}`);
+      });
+      previous = id;
+      const after = await canvas.screenshot();
+      writeFileSync(join(SCREENSHOTS, `viewer-layer-${id}.png`), after);
+      const changed = changedShare(before, after);
+      // Inland, water is the rivers and lakes only: a smaller share of the view.
+      const least = id === 'water' ? 0.003 : 0.02;
+      assert.ok(changed > least, `${id}: only ${(100 * changed).toFixed(2)} % of the canvas changed`);
+      const stats = await page.evaluate((key) => window.strahlerLayerStats[key], id);
+      assert.ok(stats?.tiles >= 1 && stats.high > stats.low, `${id}: ${JSON.stringify(stats)}`);
+      assert.equal(await page.locator('.layer-legend:visible').count(), 1, `${id}: one legend`);
+    }
+    await thenIdle(() => page.click(`#overlay-${previous}`));
+    const tiles = record.responses.filter((r) => /\/layers\/[a-z]+\/\d+\/\d+\/\d+\.png/.test(r.url));
+    for (const tile of tiles) assert.equal(tile.status, 200, tile.url);
+    for (const name of ['slope', 'illumination', 'humidity', 'vegetation', 'water']) {
+      assert.ok(tiles.some((t) => t.url.includes(`/layers/${name}/`)), `no ${name} tile was requested`);
+    }
+    assert.ok(tiles.some((t) => t.url.endsWith('?species=bush')), 'no bush tile was requested');
+    assertNoErrors(record);
+  });
+
+  test('contours from the vector tiles, index contours among them', async () => {
+    const canvas = page.locator('#map canvas');
+    const before = await canvas.screenshot();
+    await thenIdle(() => page.click('#show-contours'));
+    const after = await canvas.screenshot();
+    writeFileSync(join(SCREENSHOTS, 'viewer-contours.png'), after);
+    const counts = await page.evaluate(() => ['contours', 'contours-index']
+      .map((id) => window.strahlerMap.queryRenderedFeatures({ layers: [id] }).length));
+    assert.ok(counts[0] > 0 && counts[1] > 0, `contours drawn (plain, index): ${counts}`);
+    const changed = changedShare(before, after);
+    assert.ok(changed > 0.005, `only ${(100 * changed).toFixed(2)} % of the canvas changed`);
+    assertNoErrors(record);
   });
 });
 
