@@ -333,6 +333,27 @@ describe('map viewer layers, contours and rivers from the vector tiles (?rivers=
     assert.ok(state.orders.every(Number.isInteger), `rivers without an order: ${state.orders}`);
   });
 
+  test('click on a river of the vector tiles: popup with its order, flow, type and width', async () => {
+    const point = await page.evaluate(() => {
+      const map = window.strahlerMap;
+      const { width, height } = map.getCanvas().getBoundingClientRect();
+      for (const f of map.queryRenderedFeatures({ layers: ['rivers'] })) {
+        for (const c of f.geometry.type === 'LineString' ? f.geometry.coordinates : f.geometry.coordinates.flat()) {
+          const p = map.project(c);
+          if (p.x > 300 && p.x < width - 60 && p.y > 60 && p.y < height - 60) return { x: p.x, y: p.y };
+        }
+      }
+      return null;
+    });
+    assert.ok(point, 'no river vertex on screen');
+    await page.mouse.click(point.x, point.y);
+    const text = await page.locator('.maplibregl-popup-content').innerText({ timeout: 10_000 });
+    assert.match(text, /Strahler order \d/);
+    assert.match(text, /Flow [\d.]+ m³\/s · Rosgen type (B|E|D|D-delta)/);
+    assert.match(text, /Channel \d+ m wide/);
+    await page.evaluate(() => document.querySelectorAll('.maplibregl-popup').forEach((popup) => popup.remove()));
+  });
+
   test('each derived layer: its tiles answer 200, carry more than one value and colour the map', async () => {
     assert.equal(await page.isVisible('#layers'), true, 'the layer switcher is hidden');
     const canvas = page.locator('#map canvas');
