@@ -102,6 +102,21 @@ export function overlayOfUrl(url) {
   return OVERLAYS.find((o) => o.layer === layer && (o.query === query || (!query && o.query === '?species=tree'))) ?? null;
 }
 
+/**
+ * Decodes a grey PNG as the browser does onto an OffscreenCanvas: { canvas, context, image },
+ * the grey codes in the red channel of `image` (8-bit: the value; 16-bit: its high byte, as
+ * the browser test checks against pngjs).
+ */
+export async function readGrey(blob) {
+  // No colour management and no premultiplication: the grey codes must arrive unchanged.
+  const bitmap = await createImageBitmap(blob, { colorSpaceConversion: 'none', premultiplyAlpha: 'none' });
+  const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+  const context = canvas.getContext('2d', { willReadFrequently: true });
+  context.drawImage(bitmap, 0, 0);
+  bitmap.close();
+  return { canvas, context, image: context.getImageData(0, 0, canvas.width, canvas.height) };
+}
+
 /** The URL MapLibre should request for a layer tile at `url` (use it in transformRequest). */
 export const greyUrl = (url) => `${PROTOCOL}://${url}`;
 
@@ -116,13 +131,7 @@ export function registerGreyProtocol(maplibregl, stats = {}) {
     if (!overlay) throw new Error(`not a layer tile: ${url}`);
     const response = await fetch(url, { signal: abortController.signal });
     if (!response.ok) throw new Error(`layer tile ${url}: HTTP ${response.status}`);
-    // No colour management and no premultiplication: the grey codes must arrive unchanged.
-    const bitmap = await createImageBitmap(await response.blob(), { colorSpaceConversion: 'none', premultiplyAlpha: 'none' });
-    const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
-    const context = canvas.getContext('2d', { willReadFrequently: true });
-    context.drawImage(bitmap, 0, 0);
-    bitmap.close();
-    const image = context.getImageData(0, 0, canvas.width, canvas.height);
+    const { canvas, context, image } = await readGrey(await response.blob());
     const pixels = image.data;
     const table = colourTable(overlay);
     let low = 255, high = 0;

@@ -5,6 +5,7 @@ import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { after, before, describe, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
+import { PNG } from 'pngjs';
 import { launchBrowser, openPage } from './lib/browser.mjs';
 import { changedShare, pixelAt, pixelStats } from './lib/pixels.mjs';
 import { exportDefaultWorld } from './lib/archive.mjs';
@@ -383,6 +384,27 @@ describe('map viewer layers, contours and rivers from the vector tiles (?rivers=
     }
     assert.ok(tiles.some((t) => t.url.endsWith('?species=bush')), 'no bush tile was requested');
     assertNoErrors(record);
+  });
+
+  test('a 16-bit slope tile reaches the page as its high byte, as the slope legend says', async () => {
+    const { z, x, y } = await page.evaluate(() => {
+      const { lng, lat } = window.strahlerMap.getCenter();
+      const n = 2 ** 12, r = (lat * Math.PI) / 180;
+      return { z: 12, x: Math.floor(((lng + 180) / 360) * n), y: Math.floor(((1 - Math.asinh(Math.tan(r)) / Math.PI) / 2) * n) };
+    });
+    const [world] = await (await fetch(`${server.url}/worlds`)).json();
+    const url = `${server.url}/worlds/${world.id}/layers/slope/${z}/${x}/${y}.png`;
+    const png = PNG.sync.read(Buffer.from(await (await fetch(url)).arrayBuffer()), { skipRescale: true });
+    assert.equal(png.depth, 16);
+    const codes = await page.evaluate(async (tile) => {
+      const { readGrey } = await import('./src/layer-ramps.js');
+      const { image } = await readGrey(await (await fetch(tile)).blob());
+      return Array.from(image.data.filter((_, i) => i % 4 === 0));
+    }, url);
+    assert.equal(codes.length, png.width * png.height);
+    const wrong = codes.findIndex((code, i) => code !== png.data[4 * i] >> 8);
+    assert.equal(wrong, -1, `pixel ${wrong}: ${png.data[4 * wrong]} read as ${codes[wrong]}`);
+    assert.ok(Math.max(...codes) > 0, 'a flat tile says nothing');
   });
 
   test('contours from the vector tiles, index contours among them', async () => {
