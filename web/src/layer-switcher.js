@@ -4,7 +4,9 @@
 import { worldUrl } from './api.js';
 import { OVERLAYS, legendOf } from './layer-ramps.js';
 
+/** The id of the world's vector-tile source in the style (contours; rivers of large worlds). */
 export const VECTOR_SOURCE = 'vector';
+/** The style's contour layers: plain, then index contours. */
 export const CONTOUR_LAYERS = ['contours', 'contours-index'];
 const overlayLayer = (overlay) => `overlay-${overlay.id}`;
 
