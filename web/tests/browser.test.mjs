@@ -13,7 +13,7 @@ import { startServer } from './lib/server.mjs';
 import { startStaticServer } from './lib/static-server.mjs';
 
 const SCREENSHOTS = join(dirname(fileURLToPath(import.meta.url)), 'screenshots');
-const TOTAL_MS = 300_000; // the whole file, server start to browser close: ~3 min at load 9 on 2 cores
+const TOTAL_MS = 420_000; // the whole file, server start to browser close: ~3.7 min at load 6 on 2 cores
 const STEP_MS = 60_000;   // any one wait in a page
 
 // A blank or single-colour canvas has a luminance spread near 0 and a handful of colours.
