@@ -2,8 +2,10 @@
 // game demo near the ground, over one spot, in Debian's chromium against a real `strahler serve`.
 //   node scripts/dev/screenshots.mjs LON LAT OUT_PREFIX [strahler serve arguments...]
 // e.g. node scripts/dev/screenshots.mjs 2.93 39.70 /tmp/mallorca --coast tests/data/mallorca.geojson
-// writes OUT_PREFIX-viewer.png and OUT_PREFIX-game.png. Needs `npm ci --prefix web`, the web
-// build and build/release/bin/strahler (what scripts/test makes).
+// writes OUT_PREFIX-viewer.png and OUT_PREFIX-game.png, and the same view with the layer
+// switcher's slope, illumination and contours (OUT_PREFIX-viewer-slope.png, -illumination.png,
+// -contours.png). Needs `npm ci --prefix web`, the web build and build/release/bin/strahler
+// (what scripts/test makes).
 import { spawn } from 'node:child_process';
 import { writeFileSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
@@ -58,6 +60,18 @@ try {
   }, null, { timeout: WAIT_MS, polling: 250 });
   await viewer.waitForTimeout(1500);
   writeFileSync(`${prefix}-viewer.png`, await viewer.screenshot());
+  // The same view with one switch of the layer switcher on at a time (each switched off after).
+  for (const [name, checkbox] of [['slope', '#overlay-slope'], ['illumination', '#overlay-illumination'], ['contours', '#show-contours']]) {
+    await viewer.click(checkbox);
+    await viewer.waitForTimeout(500);
+    await viewer.waitForFunction(() => {
+      const m = window.strahlerMap;
+      return m.loaded() && m.areTilesLoaded() && !m.isMoving();
+    }, null, { timeout: WAIT_MS, polling: 250 });
+    await viewer.waitForTimeout(1000);
+    writeFileSync(`${prefix}-viewer-${name}.png`, await viewer.screenshot());
+    await viewer.click(checkbox);
+  }
   const ground = await viewer.evaluate(([lo, la]) => {
     const m = window.strahlerMap;
     return (m.queryTerrainElevation([lo, la]) ?? 0) / (m.getTerrain()?.exaggeration ?? 1);

@@ -2,6 +2,7 @@
 // no glyphs, no sprites), so the viewer works offline.
 import { worldUrl } from './api.js';
 import { FEATURES_SOURCE, featureStyle } from './features-overlay.js';
+import { VECTOR_SOURCE, contourStyle, defaultOverlayState, overlayStyle } from './layer-switcher.js';
 
 export const RIVER_LAYER = 'rivers';
 export const TERRAIN_SOURCE = 'terrain-dem';
@@ -37,18 +38,37 @@ export function reliefColour(elevation) {
   return RELIEF[1];
 }
 
+// The GeoJSON's rivers carry their order as `strahler`, the vector tiles' as `order`.
 function riverWidth(scale) {
-  return ['interpolate', ['linear'], ['coalesce', ['get', 'strahler'], 1], 1, 0.4 * scale, 6, 4 * scale];
+  return ['interpolate', ['linear'], ['coalesce', ['get', 'strahler'], ['get', 'order'], 1], 1, 0.4 * scale, 6, 4 * scale];
+}
+
+// Up to this land area the viewer reads the whole network as rivers.geojson (one request, every
+// river at every zoom); above it, the rivers of the vector tiles in view (Iceland's GeoJSON is
+// 54 MB). ?rivers=vector or ?rivers=geojson overrides the choice.
+const RIVERS_GEOJSON_MAX_KM2 = 5000;
+
+/** Whether the viewer takes `world`'s rivers from its vector tiles rather than rivers.geojson. */
+export function riversFromVectorTiles(world, search = location.search) {
+  if (world.demSource) return false; // a static archive: no vector tiles
+  const wanted = new URLSearchParams(search).get('rivers');
+  if (wanted === 'vector' || wanted === 'geojson') return wanted === 'vector';
+  return Number(world.areaKm2) > RIVERS_GEOJSON_MAX_KM2;
 }
 
 /**
  * The style of `world`; `showFeatures`: draw its artist's vector map (features-overlay.js),
- * which worlds of a static archive do not have.
+ * `overlays`: the layer switcher's state (layer-switcher.js). Worlds of a static archive have
+ * neither, nor vector tiles.
  */
-export function worldStyle(world, exaggeration, showFeatures = false) {
+export function worldStyle(world, exaggeration, showFeatures = false, overlays = defaultOverlayState()) {
   // A world read from a static archive (pmtiles-source.js) brings its own source, no rivers.
   const dem = world.demSource ?? { type: 'raster-dem', url: worldUrl(world, 'tilejson.json'), tileSize: 256 };
-  const features = world.demSource ? null : featureStyle(world, showFeatures);
+  const served = !world.demSource;
+  const features = served ? featureStyle(world, showFeatures) : null;
+  const derived = served ? overlayStyle(world, overlays) : { sources: {}, layers: [] };
+  const vectorRivers = riversFromVectorTiles(world);
+  const riverSource = vectorRivers ? { source: VECTOR_SOURCE, 'source-layer': 'rivers' } : { source: 'rivers' };
   return {
     version: 8,
     // Two sources of the same tiles: MapLibre renders 3D terrain and hillshade better when they
@@ -56,7 +76,9 @@ export function worldStyle(world, exaggeration, showFeatures = false) {
     sources: {
       [TERRAIN_SOURCE]: { ...dem },
       shade: { ...dem },
-      rivers: { type: 'geojson', data: world.riversData ?? worldUrl(world, 'rivers.geojson') },
+      ...(vectorRivers ? {} : { rivers: { type: 'geojson', data: world.riversData ?? worldUrl(world, 'rivers.geojson') } }),
+      ...(served ? { [VECTOR_SOURCE]: { type: 'vector', url: worldUrl(world, 'vector/tilejson.json') } } : {}),
+      ...derived.sources,
       ...(features ? { [FEATURES_SOURCE]: features.source } : {}),
     },
     terrain: { source: TERRAIN_SOURCE, exaggeration },
@@ -77,8 +99,10 @@ export function worldStyle(world, exaggeration, showFeatures = false) {
           'hillshade-accent-color': 'rgba(60, 50, 35, 0.4)',
         },
       },
+      ...derived.layers,
+      ...(served ? contourStyle(overlays) : []),
       {
-        id: RIVER_LAYER, type: 'line', source: 'rivers',
+        id: RIVER_LAYER, type: 'line', ...riverSource,
         filter: ['==', ['geometry-type'], 'LineString'],
         layout: { 'line-join': 'round', 'line-cap': 'round' },
         paint: {
@@ -87,11 +111,12 @@ export function worldStyle(world, exaggeration, showFeatures = false) {
           'line-color': ['match', ['get', 'rosgen'], ...Object.entries(ROSGEN_COLOURS).flat(), '#1565c0'],
         },
       },
-      {
+      // The vector tiles mark no mouths.
+      ...(vectorRivers ? [] : [{
         id: 'mouths', type: 'circle', source: 'rivers',
         filter: ['==', ['get', 'mouth'], true],
         paint: { 'circle-radius': 3, 'circle-color': '#ffffff', 'circle-stroke-color': '#0b4f9c', 'circle-stroke-width': 1.5 },
-      },
+      }]),
       ...(features ? features.layers : []),
     ],
   };

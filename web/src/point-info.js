@@ -46,12 +46,15 @@ export function describePoint(map, point, lngLat) {
   lines.push(elevation === null ? 'Elevation: unknown (no terrain)' : `Elevation ≈ ${elevation.toFixed(0)} m`);
   const river = nearestRiver(map, point);
   if (river) {
-    const { strahler, flow, rosgen, widthUpM, widthDownM } = river.properties;
-    lines.push(`Nearest river: Strahler order ${strahler}`);
+    // rivers.geojson: `strahler`, widths at both ends; vector tiles: `order`, `width` downstream.
+    const { strahler, order, flow, rosgen, widthUpM, widthDownM, width } = river.properties;
+    lines.push(`Nearest river: Strahler order ${strahler ?? order}`);
     lines.push(`Flow ${Number(flow).toFixed(flow < 10 ? 2 : 0)} m³/s · Rosgen type ${rosgen}`);
     if (widthUpM !== undefined && widthDownM !== undefined) {
       const [up, down] = [widthUpM, widthDownM].map((w) => Number(w).toFixed(0));
       lines.push(`Channel ${up === down ? up : `${up}–${down}`} m wide`);
+    } else if (width !== undefined) {
+      lines.push(`Channel ${Number(width).toFixed(0)} m wide`);
     }
   } else {
     lines.push(`No river within ${SEARCH_RADIUS_PX} px`);

@@ -8,6 +8,8 @@ import { FeaturesOverlay } from './features-overlay.js';
 import { describePoint } from './point-info.js';
 import { archiveWorlds, pmtilesArchiveUrl } from './pmtiles-source.js';
 import { TileTimings, registerTimedProtocol, showTimings, timedUrl } from './tile-timing.js';
+import { greyUrl, registerGreyProtocol } from './layer-ramps.js';
+import { LayerSwitcher } from './layer-switcher.js';
 
 const $ = (id) => document.getElementById(id);
 const FIT = { padding: 40, duration: 0 };
@@ -51,6 +53,7 @@ async function main() {
   const { worlds, selected } = archive ? await archiveWorlds(maplibregl, archive) : await loadWorlds();
   const timings = new TileTimings();
   registerTimedProtocol(maplibregl, timings);
+  window.strahlerLayerStats = registerGreyProtocol(maplibregl);
   showTimings($('timings'), timings);
   showLegend($('legend'));
 
@@ -69,9 +72,14 @@ async function main() {
     canvasContextAttributes: { preserveDrawingBuffer: true },
     fadeDuration: 0,
     attributionControl: { compact: true },
-    // Heightmap tiles go through the "timed" protocol, which records their Server-Timing.
-    transformRequest: (url, resourceType) => (resourceType === 'Tile' && /\/tiles\/\d+\/\d+\/\d+\.png/.test(url)
-      ? { url: timedUrl(url) } : undefined),
+    // Heightmap tiles go through the "timed" protocol, which records their Server-Timing;
+    // layer tiles through the "grey" one, which colours them (layer-ramps.js).
+    transformRequest: (url, resourceType) => {
+      if (resourceType !== 'Tile') return undefined;
+      if (/\/tiles\/\d+\/\d+\/\d+\.png/.test(url)) return { url: timedUrl(url) };
+      if (/\/layers\/[a-z]+\/\d+\/\d+\/\d+\.png/.test(url)) return { url: greyUrl(url) };
+      return undefined;
+    },
   });
   map.addControl(new maplibregl.NavigationControl({ visualizePitch: true }));
   map.addControl(new maplibregl.ScaleControl());
@@ -79,6 +87,8 @@ async function main() {
   window.strahlerTimings = timings;
   const features = new FeaturesOverlay(map, $('show-features'), $('features-note'));
   window.strahlerFeatures = features;
+  const switcher = new LayerSwitcher(map, $('layers'));
+  switcher.show(selected);
 
   const currentExaggeration = setupExaggeration(map);
   const showWorld = (world) => {
@@ -88,10 +98,11 @@ async function main() {
   showWorld(selected);
   features.show(selected);
   setupWorldPicker(worlds, selected, (world) => {
-    map.setStyle(worldStyle(world, currentExaggeration(), features.visible));
+    map.setStyle(worldStyle(world, currentExaggeration(), features.visible, switcher.state));
     map.fitBounds(world.bounds, FIT);
     showWorld(world);
     features.show(world);
+    switcher.show(world);
   });
 
   map.on('click', (e) => {

@@ -5,6 +5,7 @@ import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { after, before, describe, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
+import { PNG } from 'pngjs';
 import { launchBrowser, openPage } from './lib/browser.mjs';
 import { changedShare, pixelAt, pixelStats } from './lib/pixels.mjs';
 import { exportDefaultWorld } from './lib/archive.mjs';
@@ -12,7 +13,7 @@ import { startServer } from './lib/server.mjs';
 import { startStaticServer } from './lib/static-server.mjs';
 
 const SCREENSHOTS = join(dirname(fileURLToPath(import.meta.url)), 'screenshots');
-const TOTAL_MS = 300_000; // the whole file, server start to browser close: ~3 min at load 9 on 2 cores
+const TOTAL_MS = 420_000; // the whole file, server start to browser close: ~3.7 min at load 6 on 2 cores
 const STEP_MS = 60_000;   // any one wait in a page
 
 // A blank or single-colour canvas has a luminance spread near 0 and a handful of colours.
@@ -285,8 +286,139 @@ describe('map viewer over a PMTiles archive (?pmtiles=URL, any static server)', 
     assert.equal(state.hillshade, 'hillshade');
     assert.ok(Number.isFinite(state.elevation), `no terrain elevation at the centre: ${state.elevation}`);
     assert.match(state.info, /^default · \d+ km²/, 'the name and land area from the archive metadata');
+    assert.equal(await page.isVisible('#layers'), false, 'an archive has no layer or vector tiles: no switcher');
     assertNotBlank(await page.locator('#map canvas').screenshot(), 'the map canvas');
     writeFileSync(join(SCREENSHOTS, 'viewer-pmtiles.png'), await page.screenshot());
+  });
+});
+
+describe('map viewer layers, contours and rivers from the vector tiles (?rivers=vector)', () => {
+  let page, record;
+  const OVERLAYS = ['slope', 'illumination', 'humidity', 'vegetation-tree', 'vegetation-bush', 'water'];
+
+  // Runs `action` (clicks in the page), then waits until the map is idle again.
+  async function thenIdle(action) {
+    await page.evaluate(() => {
+      window.strahlerIdleAgain = new Promise((resolve) => window.strahlerMap.once('idle', resolve));
+    });
+    await action();
+    await page.evaluate((ms) => Promise.race([window.strahlerIdleAgain,
+      new Promise((resolve, reject) => setTimeout(() => reject(new Error('the map never became idle')), ms))]), STEP_MS);
+  }
+
+  before(async () => {
+    // The default world is small enough for rivers.geojson; ?rivers=vector takes the large
+    // worlds' path. Zoom 12 over the centre: contours every 50 m, every river order. A small
+    // window, seen from above, keeps the layer tiles to compute few (6 layers × ~12 tiles).
+    const [lon, lat] = (await (await fetch(`${server.url}/worlds`)).json())[0].center;
+    ({ page, record } = await openPage(browser, `${server.url}/?rivers=vector#12/${lat.toFixed(4)}/${(lon - 0.01).toFixed(4)}/0/0`,
+      { width: 800, height: 560 }));
+    await waitForIdleMap(page);
+  }, { timeout: 2 * STEP_MS });
+
+  after(() => page?.close());
+
+  test('draws the rivers of the vector tiles, not rivers.geojson', async () => {
+    assertNoErrors(record);
+    const mvt = record.responses.filter((r) => /\/vector\/\d+\/\d+\/\d+\.mvt$/.test(r.url));
+    assert.ok(mvt.length >= 1, 'no vector tile was requested');
+    for (const tile of mvt) assert.equal(tile.status, 200, tile.url);
+    assert.equal(record.responses.filter((r) => /rivers\.geojson/.test(r.url)).length, 0, 'fetched rivers.geojson');
+    const state = await page.evaluate(() => {
+      const map = window.strahlerMap;
+      const rivers = map.queryRenderedFeatures({ layers: ['rivers'] });
+      return { source: map.getLayer('rivers')?.source, count: rivers.length, orders: rivers.map((f) => f.properties.order) };
+    });
+    assert.equal(state.source, 'vector');
+    assert.ok(state.count > 0, 'no river of the vector tiles is rendered');
+    assert.ok(state.orders.every(Number.isInteger), `rivers without an order: ${state.orders}`);
+  });
+
+  test('click on a river of the vector tiles: popup with its order, flow, type and width', async () => {
+    const point = await page.evaluate(() => {
+      const map = window.strahlerMap;
+      const { width, height } = map.getCanvas().getBoundingClientRect();
+      for (const f of map.queryRenderedFeatures({ layers: ['rivers'] })) {
+        for (const c of f.geometry.type === 'LineString' ? f.geometry.coordinates : f.geometry.coordinates.flat()) {
+          const p = map.project(c);
+          if (p.x > 300 && p.x < width - 60 && p.y > 60 && p.y < height - 60) return { x: p.x, y: p.y };
+        }
+      }
+      return null;
+    });
+    assert.ok(point, 'no river vertex on screen');
+    await page.mouse.click(point.x, point.y);
+    const text = await page.locator('.maplibregl-popup-content').innerText({ timeout: 10_000 });
+    assert.match(text, /Strahler order \d/);
+    assert.match(text, /Flow [\d.]+ m³\/s · Rosgen type (B|E|D|D-delta)/);
+    assert.match(text, /Channel \d+ m wide/);
+    await page.evaluate(() => document.querySelectorAll('.maplibregl-popup').forEach((popup) => popup.remove()));
+  });
+
+  test('each derived layer: its tiles answer 200, carry more than one value and colour the map', async () => {
+    assert.equal(await page.isVisible('#layers'), true, 'the layer switcher is hidden');
+    const canvas = page.locator('#map canvas');
+    const before = await canvas.screenshot(); // no overlay; each one is switched off after its turn
+    let previous = null;
+    for (const id of OVERLAYS) {
+      await thenIdle(async () => {
+        if (previous) await page.click(`#overlay-${previous}`);
+        await page.click(`#overlay-${id}`);
+      });
+      previous = id;
+      const after = await canvas.screenshot();
+      writeFileSync(join(SCREENSHOTS, `viewer-layer-${id}.png`), after);
+      const changed = changedShare(before, after);
+      // Inland, water is the rivers and lakes only: a smaller share of the view.
+      const least = id === 'water' ? 0.003 : 0.02;
+      assert.ok(changed > least, `${id}: only ${(100 * changed).toFixed(2)} % of the canvas changed`);
+      const stats = await page.evaluate((key) => window.strahlerLayerStats[key], id);
+      assert.ok(stats?.tiles >= 1 && stats.high > stats.low, `${id}: ${JSON.stringify(stats)}`);
+      assert.equal(await page.locator('.layer-legend:visible').count(), 1, `${id}: one legend`);
+    }
+    await thenIdle(() => page.click(`#overlay-${previous}`));
+    const tiles = record.responses.filter((r) => /\/layers\/[a-z]+\/\d+\/\d+\/\d+\.png/.test(r.url));
+    for (const tile of tiles) assert.equal(tile.status, 200, tile.url);
+    for (const name of ['slope', 'illumination', 'humidity', 'vegetation', 'water']) {
+      assert.ok(tiles.some((t) => t.url.includes(`/layers/${name}/`)), `no ${name} tile was requested`);
+    }
+    assert.ok(tiles.some((t) => t.url.endsWith('?species=bush')), 'no bush tile was requested');
+    assertNoErrors(record);
+  });
+
+  test('a 16-bit slope tile reaches the page as its high byte, as the slope legend says', async () => {
+    const { z, x, y } = await page.evaluate(() => {
+      const { lng, lat } = window.strahlerMap.getCenter();
+      const n = 2 ** 12, r = (lat * Math.PI) / 180;
+      return { z: 12, x: Math.floor(((lng + 180) / 360) * n), y: Math.floor(((1 - Math.asinh(Math.tan(r)) / Math.PI) / 2) * n) };
+    });
+    const [world] = await (await fetch(`${server.url}/worlds`)).json();
+    const url = `${server.url}/worlds/${world.id}/layers/slope/${z}/${x}/${y}.png`;
+    const png = PNG.sync.read(Buffer.from(await (await fetch(url)).arrayBuffer()), { skipRescale: true });
+    assert.equal(png.depth, 16);
+    const codes = await page.evaluate(async (tile) => {
+      const { readGrey } = await import('./src/layer-ramps.js');
+      const { image } = await readGrey(await (await fetch(tile)).blob());
+      return Array.from(image.data.filter((_, i) => i % 4 === 0));
+    }, url);
+    assert.equal(codes.length, png.width * png.height);
+    const wrong = codes.findIndex((code, i) => code !== png.data[4 * i] >> 8);
+    assert.equal(wrong, -1, `pixel ${wrong}: ${png.data[4 * wrong]} read as ${codes[wrong]}`);
+    assert.ok(Math.max(...codes) > 0, 'a flat tile says nothing');
+  });
+
+  test('contours from the vector tiles, index contours among them', async () => {
+    const canvas = page.locator('#map canvas');
+    const before = await canvas.screenshot();
+    await thenIdle(() => page.click('#show-contours'));
+    const after = await canvas.screenshot();
+    writeFileSync(join(SCREENSHOTS, 'viewer-contours.png'), after);
+    const counts = await page.evaluate(() => ['contours', 'contours-index']
+      .map((id) => window.strahlerMap.queryRenderedFeatures({ layers: [id] }).length));
+    assert.ok(counts[0] > 0 && counts[1] > 0, `contours drawn (plain, index): ${counts}`);
+    const changed = changedShare(before, after);
+    assert.ok(changed > 0.005, `only ${(100 * changed).toFixed(2)} % of the canvas changed`);
+    assertNoErrors(record);
   });
 });
 
