@@ -66,6 +66,8 @@ const char* canonicalFormatName(TileFormat format) noexcept {
     return "mvt";
   case TileFormat::kLayerPng:
     return "layer";
+  case TileFormat::kVegetationJson:
+    return "json";
   }
   return "png";
 }
@@ -79,6 +81,8 @@ TileKind tileKind(TileFormat format) noexcept {
     return TileKind::kVector;
   if (format == TileFormat::kLayerPng)
     return TileKind::kLayer;
+  if (format == TileFormat::kVegetationJson)
+    return TileKind::kVegetation;
   return format == TileFormat::kDraco || format == TileFormat::kGlb ? TileKind::kMesh
                                                                     : TileKind::kHeightmap;
 }
@@ -92,7 +96,8 @@ TileSizeRange tileSizeRange(TileKind kind) noexcept {
     return {TileSizes::kMeshMin, TileSizes::kMeshMax, TileSizes::kMeshDefault};
   if (kind == TileKind::kTerrain)
     return {TileSizes::kTerrainGrid, TileSizes::kTerrainGrid, TileSizes::kTerrainGrid};
-  if (kind == TileKind::kVector) // one size: the contours' grid (vector_layers.h)
+  if (kind == TileKind::kVector ||
+      kind == TileKind::kVegetation) // one size: the contours' grid (vector_layers.h)
     return {TileSizes::kRasterDefault, TileSizes::kRasterDefault, TileSizes::kRasterDefault};
   return {TileSizes::kRasterMin, TileSizes::kRasterMax, TileSizes::kRasterDefault};
 }
