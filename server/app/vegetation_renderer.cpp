@@ -46,7 +46,11 @@ base::Result<RenderedTile> VegetationRenderer::render(const RenderContext& conte
   STRAHLER_ASSIGN_OR_RETURN(
       const std::vector<vegetation::Instance> instances,
       vegetation::placeWebTile(world_.data().params.seed, projection, tile, density));
-  out.bytes = vegetation::writeVegetationJson(tile, projection, instances);
+  std::vector<double> heights; // the ground under each plant, for clients that stand them on it
+  heights.reserve(instances.size());
+  for (const vegetation::Instance& i : instances)
+    heights.push_back(density.heightAt(i.position));
+  out.bytes = vegetation::writeVegetationJson(tile, projection, instances, heights);
   if (request.options.gzip) {
     out.bytes = gzip::compress(out.bytes, gzip::Level::kFastest);
     out.contentEncoding = "gzip";

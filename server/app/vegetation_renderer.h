@@ -8,7 +8,8 @@
 namespace strahler::app {
 
 /// Renders TileKind::kVegetation: the trees and bushes of a Web Mercator tile as JSON
-/// (vegetation::writeVegetationJson), placed by vegetation::placeWebTile against the
+/// (vegetation::writeVegetationJson, with each plant's local metres and ground height interpolated
+/// on the lattice), placed by vegetation::placeWebTile against the
 /// vegetation layer's density on the fixed lattice of LatticeDensity, so that a tile's
 /// instances are those of its four children. kNotFound at zooms without vegetation (naming
 /// the zooms that have it); gzipped when the request asks for it.

@@ -154,6 +154,8 @@ TEST(VegetationServer, ATileIsJsonWithTheTilePipelinesHeaders) {
     const double x = i["x"], y = i["y"];
     EXPECT_TRUE(x >= 0.0 && x < 1.0 && y >= 0.0 && y < 1.0) << i.dump();
     EXPECT_GE(i["radius"].get<double>(), vegetation::kSpecies[0].startRadius);
+    EXPECT_GT(i["h"].get<double>(), 0.0) << i.dump(); // on land
+    ASSERT_TRUE(i["e"].is_number() && i["n"].is_number()) << i.dump();
   }
   EXPECT_EQ(request(s.port(), path(kForest), "GET", "If-None-Match: " + r.headers["etag"] + "\r\n")
                 .status,
@@ -206,7 +208,7 @@ TEST(VegetationServer, FourChildrenHoldExactlyTheirParentsTrees) {
   std::map<std::string, std::string> parent; // id → lon,lat
   const nlohmann::json whole = fetch(s, kScrub);
   for (const auto& i : whole["instances"])
-    parent[i["id"]] = i["lon"].dump() + "," + i["lat"].dump();
+    parent[i["id"]] = i["lon"].dump() + "," + i["lat"].dump() + "," + i["h"].dump();
   std::map<std::string, std::string> children;
   std::size_t bushes = 0;
   for (int q = 0; q < 4; ++q) {
@@ -216,7 +218,9 @@ TEST(VegetationServer, FourChildrenHoldExactlyTheirParentsTrees) {
         ++bushes;
         continue;
       }
-      EXPECT_TRUE(children.emplace(i["id"], i["lon"].dump() + "," + i["lat"].dump()).second)
+      EXPECT_TRUE(
+          children.emplace(i["id"], i["lon"].dump() + "," + i["lat"].dump() + "," + i["h"].dump())
+              .second)
           << "a tree in two children: " << i.dump();
     }
   }
