@@ -25,10 +25,12 @@ base::Result<TileFormat> parseTileFormat(const std::string& name) {
     return TileFormat::kRelief;
   if (name == "mvt")
     return TileFormat::kMvt;
+  if (name == "json")
+    return TileFormat::kVegetationJson;
   return base::makeError(
       base::ErrorCode::kInvalidInput,
       "unknown tile format '" + name +
-          "' (use png, terrarium, png16, tif, exr, drc, glb, relief, terrain or mvt)");
+          "' (use png, terrarium, png16, tif, exr, drc, glb, relief, terrain, mvt or json)");
 }
 
 base::Result<LayerName> parseLayerName(const std::string& name) {

@@ -82,7 +82,7 @@ struct TileSizeRange {
 
 /// Parses a format name as used in URLs and on the command line: png (Terrain-RGB),
 /// terrarium, png16, tif, exr, drc, glb, relief (colour relief), terrain (quantized-mesh),
-/// mvt (vector tile).
+/// mvt (vector tile), json (vegetation instances).
 base::Result<TileFormat> parseTileFormat(const std::string& name);
 
 /// The name of `format` in URLs (png, terrarium, png16, tif, exr, drc, glb, relief, terrain,
