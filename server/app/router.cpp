@@ -36,6 +36,8 @@ Route routeOf(const std::vector<std::string>& s) {
     route.endpoint = Endpoint::kVectorTileJson;
   else if (s.size() == 6 && s[2] == "vector")
     route.endpoint = Endpoint::kVectorTile;
+  else if (s.size() == 6 && s[2] == "vegetation")
+    route.endpoint = Endpoint::kVegetationTile;
   else if (s.size() == 5 && s[2] == "layers" && s[4] == "tilejson.json")
     route.endpoint = Endpoint::kLayerTileJson;
   else if ((s.size() == 7 || s.size() == 8) && s[2] == "layers")

@@ -26,6 +26,7 @@ enum class Endpoint {
   kStaticFile,     ///< Anything else: a file of the built viewer, or 404.
   kVectorTileJson, ///< /worlds/{id}/vector/tilejson.json.
   kVectorTile,     ///< /worlds/{id}/vector/{z}/{x}/{y}.mvt (parseVectorTileRoute).
+  kVegetationTile, ///< /worlds/{id}/vegetation/{z}/{x}/{y}.json (parseVegetationRoute).
 };
 
 /// What a request target names: its endpoint and, under /worlds/{id}, the world.

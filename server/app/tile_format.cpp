@@ -25,10 +25,12 @@ base::Result<TileFormat> parseTileFormat(const std::string& name) {
     return TileFormat::kRelief;
   if (name == "mvt")
     return TileFormat::kMvt;
+  if (name == "json")
+    return TileFormat::kVegetationJson;
   return base::makeError(
       base::ErrorCode::kInvalidInput,
       "unknown tile format '" + name +
-          "' (use png, terrarium, png16, tif, exr, drc, glb, relief, terrain or mvt)");
+          "' (use png, terrarium, png16, tif, exr, drc, glb, relief, terrain, mvt or json)");
 }
 
 base::Result<LayerName> parseLayerName(const std::string& name) {
@@ -66,6 +68,8 @@ const char* canonicalFormatName(TileFormat format) noexcept {
     return "mvt";
   case TileFormat::kLayerPng:
     return "layer";
+  case TileFormat::kVegetationJson:
+    return "json";
   }
   return "png";
 }
@@ -79,6 +83,8 @@ TileKind tileKind(TileFormat format) noexcept {
     return TileKind::kVector;
   if (format == TileFormat::kLayerPng)
     return TileKind::kLayer;
+  if (format == TileFormat::kVegetationJson)
+    return TileKind::kVegetation;
   return format == TileFormat::kDraco || format == TileFormat::kGlb ? TileKind::kMesh
                                                                     : TileKind::kHeightmap;
 }
@@ -92,7 +98,8 @@ TileSizeRange tileSizeRange(TileKind kind) noexcept {
     return {TileSizes::kMeshMin, TileSizes::kMeshMax, TileSizes::kMeshDefault};
   if (kind == TileKind::kTerrain)
     return {TileSizes::kTerrainGrid, TileSizes::kTerrainGrid, TileSizes::kTerrainGrid};
-  if (kind == TileKind::kVector) // one size: the contours' grid (vector_layers.h)
+  if (kind == TileKind::kVector ||
+      kind == TileKind::kVegetation) // one size: the contours' grid (vector_layers.h)
     return {TileSizes::kRasterDefault, TileSizes::kRasterDefault, TileSizes::kRasterDefault};
   return {TileSizes::kRasterMin, TileSizes::kRasterMax, TileSizes::kRasterDefault};
 }

@@ -17,21 +17,23 @@ enum class TileFormat {
   kExr,
   kDraco,
   kGlb,
-  kRelief,        ///< A colour-relief picture (relief).
-  kQuantizedMesh, ///< Cesium's quantized-mesh-1.0 (.terrain), geographic pyramid only.
-  kMvt,           ///< A Mapbox Vector Tile 2.1 (.mvt), Web Mercator pyramid only.
-  kLayerPng,      ///< A derived layer (layers/{name}/...png): 8- or 16-bit grey PNG.
+  kRelief,         ///< A colour-relief picture (relief).
+  kQuantizedMesh,  ///< Cesium's quantized-mesh-1.0 (.terrain), geographic pyramid only.
+  kMvt,            ///< A Mapbox Vector Tile 2.1 (.mvt), Web Mercator pyramid only.
+  kLayerPng,       ///< A derived layer (layers/{name}/...png): 8- or 16-bit grey PNG.
+  kVegetationJson, ///< Vegetation instances (vegetation/...json), Web Mercator pyramid only.
 };
 
 /// The kind of data a tile carries; each kind has one renderer (tile_renderer.h), and a
 /// format is one encoding of one kind.
 enum class TileKind {
-  kHeightmap, ///< A raster of heights (png, terrarium, png16, tif, exr).
-  kMesh,      ///< A triangle mesh with skirts (drc, glb).
-  kRelief,    ///< A colour-relief picture: hypsometric tint × hillshade (relief).
-  kTerrain,   ///< A Cesium terrain tile: adaptive mesh, normals, water mask, availability.
-  kVector,    ///< A vector tile: rivers, contours, water, the artist's map (mvt).
-  kLayer,     ///< A derived layer of the terrain (slope, sky view, water, ...): LayerName.
+  kHeightmap,  ///< A raster of heights (png, terrarium, png16, tif, exr).
+  kMesh,       ///< A triangle mesh with skirts (drc, glb).
+  kRelief,     ///< A colour-relief picture: hypsometric tint × hillshade (relief).
+  kTerrain,    ///< A Cesium terrain tile: adaptive mesh, normals, water mask, availability.
+  kVector,     ///< A vector tile: rivers, contours, water, the artist's map (mvt).
+  kLayer,      ///< A derived layer of the terrain (slope, sky view, water, ...): LayerName.
+  kVegetation, ///< Trees and bushes placed on the terrain (json).
 };
 
 /// The derived layers (docs/architecture.md, "Layer tiles"), as named in URLs.
@@ -80,11 +82,11 @@ struct TileSizeRange {
 
 /// Parses a format name as used in URLs and on the command line: png (Terrain-RGB),
 /// terrarium, png16, tif, exr, drc, glb, relief (colour relief), terrain (quantized-mesh),
-/// mvt (vector tile).
+/// mvt (vector tile), json (vegetation instances).
 base::Result<TileFormat> parseTileFormat(const std::string& name);
 
 /// The name of `format` in URLs (png, terrarium, png16, tif, exr, drc, glb, relief, terrain,
-/// mvt; "layer" for layer tiles, which are .png under layers/{name}/).
+/// mvt; "layer" for layer tiles, which are .png under layers/{name}/; "json" for vegetation).
 const char* canonicalFormatName(TileFormat format) noexcept;
 
 /// The kind of tile `format` encodes.

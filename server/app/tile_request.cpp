@@ -37,7 +37,7 @@ std::string tileKey(const TileRequest& request) {
     append(request.options.extensions);
     key.append(request.options.gzip ? "|gz" : "|id");
   }
-  if (request.kind() == TileKind::kVector)
+  if (request.kind() == TileKind::kVector || request.kind() == TileKind::kVegetation)
     key.append(request.options.gzip ? "|gz" : "|id");
   if (request.kind() == TileKind::kLayer) {
     const LayerOptions& layer = request.options.layer;

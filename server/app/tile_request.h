@@ -13,7 +13,8 @@ struct TileOptions {
   int size = 0; ///< Pixels or quads per side; 0: the kind's default (tileSizeRange()).
   /// Cesium terrain only: the extensions asked for (CesiumExtension bits).
   unsigned extensions = 0;
-  /// Cesium terrain and vector tiles only: the bytes gzipped (sent as Content-Encoding: gzip).
+  /// Cesium terrain, vector and vegetation tiles only: the bytes gzipped (sent as Content-Encoding:
+  /// gzip).
   bool gzip = false;
   /// Layer tiles only: the layer and its parameters.
   LayerOptions layer = {};
@@ -41,7 +42,8 @@ struct TileRequest {
 
 /// The canonical key of `request`: "world|tiles|z|x|y|format|size" ("local" for the local
 /// pyramid, "cesium" for the geographic one, the format's canonical name, size 0 for the
-/// default; Cesium terrain adds "|extensions|gzip", vector tiles "|gz" or "|id", a layer tile
+/// default; Cesium terrain adds "|extensions|gzip", vector and vegetation tiles "|gz" or "|id", a
+/// layer tile
 /// "|name" and its species or "|azimuth|altitude"). Requests for the same tile have the same key as
 /// long as their size is 0 whenever it is the default (parseTileRoute
 /// makes it so): the tile's cache key and, with its world's cache key, its ETag.

@@ -56,6 +56,8 @@ base::Result<TileRequest> parseTileRoute(const std::string& world,
     return badTile("Cesium terrain tiles are served under /worlds/{id}/cesium/ (TMS rows)");
   if (request.kind() == TileKind::kVector)
     return badTile("vector tiles are served under /worlds/{id}/vector/");
+  if (request.kind() == TileKind::kVegetation)
+    return badTile("vegetation tiles are served under /worlds/{id}/vegetation/");
   STRAHLER_ASSIGN_OR_RETURN(request.options.size, tileSize(query, request.format));
   request.world = world;
   request.scheme = s[2] == "local" ? tiling::SchemeKind::kLocal : tiling::SchemeKind::kWebMercator;

@@ -15,6 +15,7 @@
 #include "tile_service.h"
 #include "vector_layers.h"
 #include "vector_route.h"
+#include "vegetation_route.h"
 #include "world_bounds.h"
 #include "world_documents.h"
 
@@ -231,6 +232,13 @@ void TileServer::handleWorld(const ServedWorld& w, Endpoint endpoint, const Pars
       return done(http::errorResponse(400, parsed.error().message));
     return tile(w, parsed.value(), request, std::move(done));
   }
+  case Endpoint::kVegetationTile: {
+    auto parsed = parseVegetationRoute(w.id, target.segments, target.query,
+                                       request.header("accept-encoding"));
+    if (!parsed)
+      return done(http::errorResponse(400, parsed.error().message));
+    return tile(w, parsed.value(), request, std::move(done));
+  }
   default:
     return done(http::errorResponse(404, "no such resource under /worlds/" + w.id));
   }
@@ -247,9 +255,10 @@ void TileServer::tile(const ServedWorld& w, const TileRequest& tile, const http:
   }
   const std::string key = tileKey(tile);
   // Cesium terrain's bytes follow the Accept header (its extensions) and Accept-Encoding.
-  const char* vary = tile.kind() == TileKind::kTerrain  ? "Accept, Accept-Encoding"
-                     : tile.kind() == TileKind::kVector ? "Accept-Encoding"
-                                                        : "";
+  const char* vary = tile.kind() == TileKind::kTerrain ? "Accept, Accept-Encoding"
+                     : tile.kind() == TileKind::kVector || tile.kind() == TileKind::kVegetation
+                         ? "Accept-Encoding"
+                         : "";
   if (const std::string ifNoneMatch = request.header("if-none-match"); !ifNoneMatch.empty()) {
     const std::string etag = tileEtag(w.cacheKey, key);
     if (etagMatches(ifNoneMatch, etag))

@@ -6,6 +6,7 @@
 #include "mesh_renderer.h"
 #include "relief_renderer.h"
 #include "vector_tile_renderer.h"
+#include "vegetation_renderer.h"
 
 #include <string>
 
@@ -43,6 +44,8 @@ TileService::TileService(construction::WorldData world)
       world_, geometry::LocalProjection(world_.data().projectionCenter.x,
                                         world_.data().projectionCenter.y));
   renderers_[static_cast<std::size_t>(TileKind::kLayer)] = std::make_unique<LayerRenderer>(world_);
+  renderers_[static_cast<std::size_t>(TileKind::kVegetation)] =
+      std::make_unique<VegetationRenderer>(world_);
 }
 
 TileService::~TileService() = default;

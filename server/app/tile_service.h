@@ -61,7 +61,8 @@ private:
   tiling::TileScheme local_;
   tiling::TileScheme geographic_;
   /// The renderer of each TileKind, by its value.
-  std::array<std::unique_ptr<const TileRenderer>, static_cast<std::size_t>(TileKind::kLayer) + 1>
+  std::array<std::unique_ptr<const TileRenderer>,
+             static_cast<std::size_t>(TileKind::kVegetation) + 1>
       renderers_;
 };
 

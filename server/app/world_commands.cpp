@@ -70,7 +70,7 @@ constexpr const char* kAnalyzeUsage =
 
 constexpr const char* kTileUsage =
     "usage: strahler tile WORLD.world --scheme web|local|cesium --z Z --x X --y Y\n"
-    "                     --format png|terrarium|png16|tif|exr|drc|glb|relief|terrain|mvt\n"
+    "                     --format png|terrarium|png16|tif|exr|drc|glb|relief|terrain|mvt|json\n"
     "                     [--size N] -o FILE\n"
     "       strahler tile WORLD.world --scheme web|local --z Z --x X --y Y --layer NAME\n"
     "                     [--species tree|bush] [--azimuth DEG --altitude DEG] [--size N] -o FILE\n"
@@ -78,7 +78,8 @@ constexpr const char* kTileUsage =
     "quadtree; cesium: Cesium's geographic TMS pyramid (Y counts rows from the south),\n"
     "format terrain only: quantized-mesh-1.0 with normals, water mask and metadata.\n"
     "png is Terrain-RGB; relief an RGB picture (height tint x hillshade);\n"
-    "mvt a Mapbox Vector Tile (web only: water, contours, rivers, features).\n"
+    "mvt a Mapbox Vector Tile (web only: water, contours, rivers, features);\n"
+    "json the trees and bushes of a tile (web only, zooms 16..18; see the README).\n"
     "--layer: a derived layer as a grey PNG (slope, aspect, illumination, hillshade,\n"
     "humidity, sediment, vegetation, water; see the README), instead of --format;\n"
     "--species for vegetation, --azimuth/--altitude for hillshade.\n"

@@ -84,4 +84,18 @@ TEST(TileCommand, RefusesBadLayerRequestsNamingTheProblem) {
       << cesium.err;
 }
 
+TEST(TileCommand, WritesVegetationTilesAsTheServerDoes) {
+  const fs::path trees = scratchDir() / "trees.json", shallow = scratchDir() / "shallow.json";
+  const ProcessRun r =
+      run("tile " + world().string() +
+          " --scheme web --z 16 --x 27784 --y 23912 --format json -o " + trees.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string json = strahler::test_support::readWholeFile(trees);
+  EXPECT_EQ(json.rfind("{\"tile\":[16,27784,23912],\"species\":[", 0), 0u) << json.substr(0, 80);
+  EXPECT_NE(json.find("\"instances\":["), std::string::npos);
+  const ProcessRun z12 = run(tileArgs("--format json", shallow));
+  EXPECT_NE(z12.exitCode, 0);
+  EXPECT_NE(z12.err.find("zooms 16 to 18"), std::string::npos) << z12.err;
+}
+
 } // namespace

@@ -1,5 +1,7 @@
-// Game-client demo: streams a world's LocalQuad Draco mesh tiles around a free-flying camera.
-// Tests read window.strahlerGame (tile counters, frames drawn, the camera).
+// Game-client demo: streams a world's LocalQuad Draco mesh tiles around a free-flying camera,
+// with instanced trees and bushes near it (vegetation.js).
+// Tests read window.strahlerGame (tile counters, frames drawn, the camera, vegetation.stats,
+// groundAt(x, z)).
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { DRACOLoader } from 'three/addons/loaders/DRACOLoader.js';
@@ -7,6 +9,7 @@ import { loadWorlds, worldUrl } from './api.js';
 import { FlyControls } from './fly-controls.js';
 import { createTerrainMaterial } from './terrain-material.js';
 import { TileStreamer } from './tile-streamer.js';
+import { VegetationLayer } from './vegetation.js';
 
 const GRID_SIZE = 64; // quads per tile side, the server's default ?size=
 const SKY = new THREE.Color('#a9c8e6');
@@ -65,8 +68,19 @@ async function main() {
   const streamer = new TileStreamer(world, createLoader(world, terrain), { gridSize: GRID_SIZE });
   scene.add(streamer.group);
   const controls = new FlyControls(camera, canvas);
+  const vegetation = new VegetationLayer(world, (path) => worldUrl(world, path));
+  scene.add(vegetation.group);
 
-  const game = { world, camera, streamer, stats: streamer.stats, frames: 0 };
+  // The height of the loaded terrain under (x, z), or null where no tile is loaded yet.
+  const raycaster = new THREE.Raycaster();
+  const down = new THREE.Vector3(0, -1, 0);
+  const groundAt = (x, z) => {
+    raycaster.set(new THREE.Vector3(x, 1e5, z), down);
+    const hit = raycaster.intersectObject(streamer.group, true)[0];
+    return hit ? hit.point.y : null;
+  };
+
+  const game = { world, camera, streamer, stats: streamer.stats, vegetation, groundAt, frames: 0 };
   window.strahlerGame = game;
 
   const resize = () => {
@@ -80,11 +94,14 @@ async function main() {
   const statsText = document.getElementById('stats');
   let last = performance.now();
   let heightRampSet = false;
+  let ground = 0; // the terrain under the camera, sampled every few frames
   renderer.setAnimationLoop((now) => {
     const seconds = Math.min(0.1, (now - last) / 1000);
     last = now;
     controls.update(seconds);
     streamer.update(camera, renderer.domElement.height);
+    if (game.frames % 10 === 0) ground = groundAt(camera.position.x, camera.position.z) ?? ground;
+    vegetation.update(camera, ground);
     // The roots' height range sets the colour ramp, so snow sits on this world's summits.
     if (!heightRampSet && streamer.stats.inFlight === 0 && streamer.stats.loaded > 0) {
       terrain.setMaxHeight(streamer.rootMaxHeight());
@@ -97,6 +114,7 @@ async function main() {
       statsText.textContent = `${world.name ?? world.id}\n` +
         `tiles visible ${s.visible} (deepest z${s.maxVisibleZoom}) · cached ${s.cached}\n` +
         `loaded ${s.loaded} · in flight ${s.inFlight} · evicted ${s.evicted} · failed ${s.failed}\n` +
+        `trees ${vegetation.stats.tree} · bushes ${vegetation.stats.bush}\n` +
         `altitude ${camera.position.y.toFixed(0)} m · ${(1 / Math.max(seconds, 1e-3)).toFixed(0)} fps`;
     }
   });

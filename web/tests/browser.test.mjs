@@ -474,3 +474,60 @@ describe('game client', () => {
     assertNoErrors(record);
   });
 });
+
+describe('game client vegetation', () => {
+  let page, record;
+  const vegetation = () => page.evaluate(() => ({ ...window.strahlerGame.vegetation.stats }));
+
+  before(async () => {
+    ({ page, record } = await openPage(browser, `${server.url}/game.html`));
+    await page.waitForFunction(() => window.strahlerGame?.stats.loaded > 0 && window.strahlerGame.stats.inFlight === 0,
+      null, { timeout: STEP_MS, polling: 100 });
+  }, { timeout: STEP_MS + 10_000 });
+
+  after(() => page?.close());
+
+  test('instances trees and bushes near the ground from vegetation tiles, without errors', async () => {
+    // Low land near the world's centre, where the vegetation layer puts forests (valleys), found
+    // on the loaded terrain: the camera 25 m above it, looking along the ground.
+    const spots = await page.evaluate(() => {
+      const g = window.strahlerGame;
+      const { rootSide, rootSouthWest: [west, south] } = g.world.local;
+      const out = [];
+      for (let j = 1; j < 12; j += 1) {
+        for (let i = 1; i < 12; i += 1) {
+          const x = west + (rootSide * i) / 12, z = -(south + (rootSide * j) / 12);
+          const h = g.groundAt(x, z);
+          if (h !== null && h > 15 && h < 400) out.push([x, h, z]);
+        }
+      }
+      return out.sort((a, b) => a[1] - b[1]);
+    });
+    assert.ok(spots.length > 0, 'no low land found on the terrain');
+    let stats;
+    for (const [x, h, z] of spots.slice(0, 6)) {
+      await page.evaluate(([x, h, z]) => {
+        const { camera } = window.strahlerGame;
+        camera.position.set(x, h + 25, z);
+        camera.rotation.set(-0.15, 0.4, 0, 'YXZ');
+      }, [x, h, z]);
+      await page.waitForFunction(() => {
+        const g = window.strahlerGame;
+        return g.vegetation.stats.requested > 0 && g.vegetation.inFlight === 0 && g.stats.inFlight === 0;
+      }, null, { timeout: STEP_MS, polling: 200 });
+      stats = await vegetation();
+      if (stats.tree > 0) break;
+    }
+    assert.ok(stats.tree > 0 && stats.failed === 0, `no tree drawn: ${JSON.stringify(stats)}`);
+    const tiles = record.responses.filter((r) => /\/vegetation\/1[67]\/\d+\/\d+\.json/.test(r.url));
+    assert.ok(tiles.length > 0, 'no vegetation tile was requested');
+    for (const tile of tiles) assert.match(tile.type, /^application\/json/, tile.url);
+    const drawn = await page.evaluate(() => window.strahlerGame.vegetation.group.children
+      .map((mesh) => ({ name: mesh.name, count: mesh.count, instanced: mesh.isInstancedMesh })));
+    assert.ok(drawn.some((m) => m.name === 'trees' && m.instanced && m.count === stats.tree), JSON.stringify(drawn));
+    await page.waitForTimeout(500);
+    assertNotBlank(await page.locator('#scene').screenshot(), 'the game canvas near the ground');
+    writeFileSync(join(SCREENSHOTS, 'game-vegetation.png'), await page.screenshot());
+    assertNoErrors(record);
+  });
+});

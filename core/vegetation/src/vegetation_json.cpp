@@ -1,5 +1,7 @@
 #include "strahler/vegetation/vegetation_json.h"
 
+#include "strahler/base/assert.h"
+
 #include <charconv>
 #include <cstdio>
 
@@ -22,9 +24,12 @@ void appendInteger(std::string& out, std::int64_t value) {
 } // namespace
 
 std::string writeVegetationJson(const WebTile& tile, const geometry::LocalProjection& projection,
-                                std::span<const Instance> instances) {
+                                std::span<const Instance> instances,
+                                std::span<const double> heights) {
+  STRAHLER_ASSERT(heights.empty() || heights.size() == instances.size(),
+                  "vegetation JSON: one height per instance");
   std::string out;
-  out.reserve(256 + instances.size() * 150);
+  out.reserve(256 + instances.size() * (heights.empty() ? 150 : 190));
   out += "{\"tile\":[";
   appendInteger(out, tile.z);
   out += ',';
@@ -62,6 +67,14 @@ std::string writeVegetationJson(const WebTile& tile, const geometry::LocalProjec
     appendFixed(out, inst.rotation, 3);
     out += ",\"scale\":";
     appendFixed(out, inst.scale, 3);
+    if (!heights.empty()) {
+      out += ",\"e\":";
+      appendFixed(out, inst.position.x, 2);
+      out += ",\"n\":";
+      appendFixed(out, inst.position.y, 2);
+      out += ",\"h\":";
+      appendFixed(out, heights[i], 2);
+    }
     char id[17];
     std::snprintf(id, sizeof id, "%016llx", static_cast<unsigned long long>(inst.id));
     out += ",\"id\":\"";
