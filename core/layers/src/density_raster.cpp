@@ -17,7 +17,7 @@ namespace {
 static_assert(Sediment::kConcavityScale == Humidity::kConcavityScale,
               "one hollow factor for the sediment and the humidity");
 
-/// Per pixel of one row: the sediment S and the local wetness index, from one gradient and one
+/// Per pixel of one row: the sediment S (m) and the local wetness index, from one gradient and one
 /// concavity, in the very operations of gradientAt(), concavityAt(), sedimentOf() and
 /// localWetness() (the same doubles), over contiguous rows so that the loop vectorises.
 void localRow(const BorderedHeights& grid, int y, double* sediment, double* local) {
@@ -56,6 +56,17 @@ double bilinearAt(const std::vector<double>& coarse, std::size_t cw, std::size_t
   return ty == 0.0 ? top : top + ty * (bottom - top);
 }
 
+/// ResponseCurve::operator(), here so that the per-pixel loops inline it (the same doubles).
+double curveAt(const ResponseCurve& c, double x) noexcept {
+  if (x < c.rise0 || x > c.fall0)
+    return 0.0;
+  if (x < c.rise1)
+    return c.rise1 > c.rise0 ? (x - c.rise0) / (c.rise1 - c.rise0) : 1.0;
+  if (x > c.fall1)
+    return c.fall0 > c.fall1 ? (c.fall0 - x) / (c.fall0 - c.fall1) : 1.0;
+  return 1.0;
+}
+
 } // namespace
 
 std::vector<double> vegetationDensityRaster(const Species& species, const BorderedHeights& grid,
@@ -70,13 +81,15 @@ std::vector<double> vegetationDensityRaster(const Species& species, const Border
                   "vegetationDensityRaster: one wetness per even pixel, one water flag per pixel");
   // Where there is water or no soil (C_S = 0) the density is 0 whatever the sky: the even
   // pixels only such pixels read (their own and, at odd indices, the next ones) need no sky.
-  std::vector<double> sediment(width * height), local(width * height);
+  // soil: C_S, 0 on water (vegetationDensity() is 0 there).
+  std::vector<double> soil(width * height), local(width * height);
   std::vector<std::uint8_t> wanted(cw * ch, 0);
   for (std::size_t y = 0; y < height; ++y) {
-    localRow(grid, static_cast<int>(y), &sediment[y * width], &local[y * width]);
+    localRow(grid, static_cast<int>(y), &soil[y * width], &local[y * width]);
     for (std::size_t x = 0; x < width; ++x) {
       const std::size_t k = y * width + x;
-      if (water[k] != 0 || species.sediment(sediment[k]) == 0.0)
+      soil[k] = water[k] != 0 ? 0.0 : curveAt(species.sediment, soil[k]);
+      if (soil[k] == 0.0)
         continue;
       for (std::size_t j = y / 2; j <= (y + 1) / 2; ++j)
         for (std::size_t i = x / 2; i <= (x + 1) / 2; ++i)
@@ -89,11 +102,15 @@ std::vector<double> vegetationDensityRaster(const Species& species, const Border
   for (std::size_t y = 0; y < height; ++y)
     for (std::size_t x = 0; x < width; ++x) {
       const std::size_t k = y * width + x;
+      if (soil[k] == 0.0) // vegetationDensity(): C_S · (C_I + C_H) = 0 · (…)
+        continue;
       const double humidity = grid.at(static_cast<int>(x), static_cast<int>(y)) < 0.0
                                   ? 1.0
                                   : std::max(bilinearAt(wet, cw, x, y), local[k]);
-      density[k] = vegetationDensity(
-          species, {sediment[k], bilinearAt(sky, cw, x, y), humidity, water[k] != 0});
+      // vegetationDensity()'s operations on the same doubles.
+      const double d = soil[k] * (curveAt(species.illumination, bilinearAt(sky, cw, x, y)) +
+                                  curveAt(species.humidity, humidity));
+      density[k] = std::clamp(0.5 * d, 0.0, 1.0);
     }
   return density;
 }

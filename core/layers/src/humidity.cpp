@@ -30,6 +30,8 @@ std::vector<double> wetnessAt(const construction::World& world, const tiling::Sa
   };
   const double minWidth =
       widthFor(*std::min_element(grid.rowSpacing.begin(), grid.rowSpacing.end()));
+  std::vector<double> rowWidth(grid.rowSpacing.size());
+  std::transform(grid.rowSpacing.begin(), grid.rowSpacing.end(), rowWidth.begin(), widthFor);
   const tiling::GridRows rows(grid);
   tiling::forEachRiverSegment(
       world, grid.bounds, minWidth, kBeyond * Humidity::kMaxReachM,
@@ -44,11 +46,13 @@ std::vector<double> wetnessAt(const construction::World& world, const tiling::Sa
         rows.forEachIn(box.expanded(far), [&](std::size_t j, std::size_t i) {
           if (j < b || i < b || j - b >= insideHeight || i - b >= insideWidth)
             return;
+          double& r = ratio[(j - b) * insideWidth + (i - b)];
+          if (r == 0.0 || 2.0 * half < rowWidth[j]) // in a channel already; or too narrow
+            return;
           const double d2 =
               tiling::distance2ToSegment(grid.points[j * width + i], segment.a, segment.b);
-          if (d2 >= far * far || 2.0 * half < widthFor(grid.rowSpacing[j]))
+          if (d2 >= far * far)
             return;
-          double& r = ratio[(j - b) * insideWidth + (i - b)];
           r = std::min(r, std::max(0.0, std::sqrt(d2) - half) / reach);
         });
       });
