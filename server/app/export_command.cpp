@@ -282,11 +282,11 @@ void showProgress(TerminalProgress& progress, std::size_t done, std::size_t tota
 base::Status renderInOrder(const TileService& service, const ExportOptions& options,
                            const std::vector<std::uint64_t>& ids, archive::TileArchiveSink& sink,
                            TerminalProgress& progress) {
-  OrderedRenderer renderer(
-      service,
-      {options.tile, options.size, options.threads, options.tile == TileFormat::kMvt,
-       options.layer.value_or(LayerOptions{})},
-      ids);
+  OrderedRenderer renderer(service,
+                           {options.tile, options.size, options.threads,
+                            options.tile == TileFormat::kMvt,
+                            options.layer.value_or(LayerOptions{})},
+                           ids);
   const auto start = Clock::now();
   auto last = start - std::chrono::seconds(1);
   for (std::size_t written = 0; written < ids.size();) {
@@ -350,12 +350,11 @@ archive::ArchiveMetadata metadataFor(const construction::WorldData& world, const
     m.encoding = "mapbox";
     m.description = "strahler terrain (Terrain-RGB heightmap)";
   }
-  m.extra.insert(m.extra.begin(),
-                 {{"generator", "strahler " STRAHLER_VERSION},
-                  {"generatorVersion", world.generatorVersion},
-                  {"worldId", world.cacheKey},
-                  {"seed", std::to_string(world.params.seed)},
-                  {"areaKm2", std::to_string(std::llround(world.areaKm2()))}});
+  m.extra.insert(m.extra.begin(), {{"generator", "strahler " STRAHLER_VERSION},
+                                   {"generatorVersion", world.generatorVersion},
+                                   {"worldId", world.cacheKey},
+                                   {"seed", std::to_string(world.params.seed)},
+                                   {"areaKm2", std::to_string(std::llround(world.areaKm2()))}});
   return m;
 }
 
@@ -454,11 +453,11 @@ int exportWorld(const ExportOptions& o, construction::WorldData world) {
 } // namespace
 
 int runExport(const std::vector<std::string>& raw) {
-  auto parsed = CliArgs::parse("export", raw,
-                               {"--format", "--scheme", "--zooms", "--bbox", "--tile", "--size",
-                                "--threads", "--max-tiles", "-o", "--layer", "--species",
-                                "--azimuth", "--altitude"},
-                               {"--help", "-h", "--quiet"});
+  auto parsed =
+      CliArgs::parse("export", raw,
+                     {"--format", "--scheme", "--zooms", "--bbox", "--tile", "--size", "--threads",
+                      "--max-tiles", "-o", "--layer", "--species", "--azimuth", "--altitude"},
+                     {"--help", "-h", "--quiet"});
   if (!parsed)
     return usageError(parsed.error(), kExportUsage);
   const CliArgs& args = parsed.value();

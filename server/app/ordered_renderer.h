@@ -20,7 +20,7 @@ struct RenderJob {
   TileFormat format = TileFormat::kTerrainRgb;
   int size = 0; ///< 0: the format's default.
   int threads = 1;
-  bool gzip = false; ///< Gzip the bytes (vector tiles in archives).
+  bool gzip = false;  ///< Gzip the bytes (vector tiles in archives).
   LayerOptions layer; ///< TileFormat::kLayerPng: the layer and its parameters.
 };
 
