@@ -40,7 +40,7 @@ std::vector<double> riverWetness(const construction::World& world, const tiling:
 
 /// riverWetness() at step 2 without the interpolation: the values at every other sample of
 /// every other row inside the border, the last row and column the border's first, (inside / 2
-/// + 1) per row, inside / 2 + 1 rows (the even pixels of vegetationDensityEven()).
+/// + 1) per row, inside / 2 + 1 rows (the even pixels of vegetationDensityRaster()).
 std::vector<double> riverWetnessEven(const construction::World& world,
                                      const tiling::SampleGrid& grid, int border);
 
