@@ -4,6 +4,7 @@
 #include "command_support.h"
 #include "export_plan.h"
 #include "hilbert_tile_id.h"
+#include "layer_route.h"
 #include "mbtiles_writer.h"
 #include "ordered_renderer.h"
 #include "pmtiles_writer.h"
@@ -21,6 +22,7 @@
 #include <cstdio>
 #include <fcntl.h>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <thread>
 #include <unistd.h>
@@ -38,13 +40,18 @@ constexpr const char* kExportUsage =
     "                       [--format pmtiles|mbtiles] [--scheme web] [--bbox W,S,E,N]\n"
     "                       [--tile png|terrarium|png16|relief|mvt] [--size N] [--threads N]\n"
     "                       [--max-tiles N] [--quiet]\n"
+    "       strahler export WORLD.world --zooms A-B -o FILE --layer NAME [--species tree|bush]\n"
+    "                       [--azimuth DEG --altitude DEG] [options above but --tile]\n"
     "Writes every Web Mercator tile of the world in zooms A..B (0..18) that touches its bounds\n"
     "(and --bbox, degrees) to a PMTiles v3 or MBTiles 1.3 archive, byte for byte the tiles\n"
     "`strahler serve` sends. --format defaults to the extension of FILE. png is Terrain-RGB\n"
     "(the default), relief a colour-relief picture, mvt the vector tiles (gzipped; no --size);\n"
     "N: pixels per side, 16..1024, default 256. --threads: default all cores; the archive is the "
     "same for any count. Identical\n"
-    "tiles (the open sea) are stored once.\n"
+    "tiles (the open sea) are stored once. --layer: a derived layer's grey PNG tiles instead\n"
+    "(slope, aspect, illumination, hillshade, humidity, sediment, vegetation, water), as\n"
+    "`strahler tile --layer` and the layers/ URLs give them; --species for vegetation,\n"
+    "--azimuth/--altitude for hillshade.\n"
     "More than --max-tiles tiles (default 5000000) are refused. The archive is written to\n"
     "FILE.tmp.PID and renamed when complete; on an error or SIGINT/SIGTERM nothing is left.\n";
 
@@ -61,6 +68,7 @@ struct ExportOptions {
   std::uint64_t maxTiles = kDefaultMaxTiles;
   std::pair<int, int> zooms;
   std::optional<LonLatBox> bbox;
+  std::optional<LayerOptions> layer; ///< --layer: tile is TileFormat::kLayerPng.
   std::string output;
   bool quiet = false;
 };
@@ -95,6 +103,26 @@ base::Result<TileFormat> archiveTileFormat(const std::string& name) {
   return f;
 }
 
+/// --layer NAME and its parameters (as `strahler tile --layer` takes them), or none.
+base::Result<std::optional<LayerOptions>> layerOptions(const CliArgs& args) {
+  const auto name = args.get("--layer");
+  for (const char* option : {"--species", "--azimuth", "--altitude"})
+    if (!name && args.get(option))
+      return makeError(ErrorCode::kInvalidInput, std::string(option) + " needs --layer");
+  if (!name)
+    return std::optional<LayerOptions>();
+  if (const auto tile = args.get("--tile"))
+    return makeError(ErrorCode::kInvalidInput,
+                     "--layer " + *name + " and --tile " + *tile +
+                         ": a layer archive holds the layer's grey PNGs; give one of them");
+  std::map<std::string, std::string> query;
+  for (const char* option : {"species", "azimuth", "altitude"})
+    if (const auto value = args.get(std::string("--") + option))
+      query[option] = *value;
+  STRAHLER_ASSIGN_OR_RETURN(const LayerOptions layer, parseLayerOptions(*name, query));
+  return std::optional<LayerOptions>(layer);
+}
+
 base::Result<ExportOptions> parseOptions(const CliArgs& args) {
   ExportOptions o;
   if (args.positional().size() != 1)
@@ -108,7 +136,12 @@ base::Result<ExportOptions> parseOptions(const CliArgs& args) {
     return makeError(ErrorCode::kInvalidInput,
                      "--scheme " + scheme + ": archives hold Web Mercator tiles: use web");
   STRAHLER_ASSIGN_OR_RETURN(o.kind, archiveKind(args, o.output));
-  STRAHLER_ASSIGN_OR_RETURN(o.tile, archiveTileFormat(args.get("--tile").value_or("png")));
+  STRAHLER_ASSIGN_OR_RETURN(o.layer, layerOptions(args));
+  if (o.layer) {
+    o.tile = TileFormat::kLayerPng;
+  } else {
+    STRAHLER_ASSIGN_OR_RETURN(o.tile, archiveTileFormat(args.get("--tile").value_or("png")));
+  }
   STRAHLER_ASSIGN_OR_RETURN(o.zooms,
                             parseZoomRange(*args.get("--zooms"), tiling::TileScheme::kMaxWebZoom));
   if (const auto bbox = args.get("--bbox")) {
@@ -249,9 +282,11 @@ void showProgress(TerminalProgress& progress, std::size_t done, std::size_t tota
 base::Status renderInOrder(const TileService& service, const ExportOptions& options,
                            const std::vector<std::uint64_t>& ids, archive::TileArchiveSink& sink,
                            TerminalProgress& progress) {
-  OrderedRenderer renderer(
-      service, {options.tile, options.size, options.threads, options.tile == TileFormat::kMvt},
-      ids);
+  OrderedRenderer renderer(service,
+                           {options.tile, options.size, options.threads,
+                            options.tile == TileFormat::kMvt,
+                            options.layer.value_or(LayerOptions{})},
+                           ids);
   const auto start = Clock::now();
   auto last = start - std::chrono::seconds(1);
   for (std::size_t written = 0; written < ids.size();) {
@@ -295,6 +330,16 @@ archive::ArchiveMetadata metadataFor(const construction::WorldData& world, const
   case TileFormat::kRelief: // a picture, not heights: no encoding
     m.description = "strahler terrain (colour relief: height tint times hillshade)";
     break;
+  case TileFormat::kLayerPng: { // grey PNGs: the layer, its parameters, its encoding
+    const LayerOptions& layer = *o.layer;
+    const std::string name = kLayerNames[static_cast<std::size_t>(layer.name)];
+    m.description = layerDescription(layer.name);
+    m.extra.emplace_back("layer", name);
+    if (const std::string query = layerQuery(layer); !query.empty())
+      m.extra.emplace_back("layerQuery", query.substr(1));
+    m.extra.emplace_back("layerEncoding", m.description);
+    break;
+  }
   case TileFormat::kMvt: // gzipped, as MBTiles' pbf and PMTiles readers expect
     m.tileFormat = "pbf";
     m.description = "strahler vector tiles (water, contours, rivers, features)";
@@ -305,11 +350,11 @@ archive::ArchiveMetadata metadataFor(const construction::WorldData& world, const
     m.encoding = "mapbox";
     m.description = "strahler terrain (Terrain-RGB heightmap)";
   }
-  m.extra = {{"generator", "strahler " STRAHLER_VERSION},
-             {"generatorVersion", world.generatorVersion},
-             {"worldId", world.cacheKey},
-             {"seed", std::to_string(world.params.seed)},
-             {"areaKm2", std::to_string(std::llround(world.areaKm2()))}};
+  m.extra.insert(m.extra.begin(), {{"generator", "strahler " STRAHLER_VERSION},
+                                   {"generatorVersion", world.generatorVersion},
+                                   {"worldId", world.cacheKey},
+                                   {"seed", std::to_string(world.params.seed)},
+                                   {"areaKm2", std::to_string(std::llround(world.areaKm2()))}});
   return m;
 }
 
@@ -408,10 +453,11 @@ int exportWorld(const ExportOptions& o, construction::WorldData world) {
 } // namespace
 
 int runExport(const std::vector<std::string>& raw) {
-  auto parsed = CliArgs::parse("export", raw,
-                               {"--format", "--scheme", "--zooms", "--bbox", "--tile", "--size",
-                                "--threads", "--max-tiles", "-o"},
-                               {"--help", "-h", "--quiet"});
+  auto parsed =
+      CliArgs::parse("export", raw,
+                     {"--format", "--scheme", "--zooms", "--bbox", "--tile", "--size", "--threads",
+                      "--max-tiles", "-o", "--layer", "--species", "--azimuth", "--altitude"},
+                     {"--help", "-h", "--quiet"});
   if (!parsed)
     return usageError(parsed.error(), kExportUsage);
   const CliArgs& args = parsed.value();

@@ -3,6 +3,7 @@
 #include "render_clock.h"
 
 #include "strahler/encoding/grey_png.h"
+#include "strahler/layers/density_raster.h"
 #include "strahler/layers/humidity.h"
 #include "strahler/layers/sediment.h"
 #include "strahler/layers/sky_view.h"
@@ -74,6 +75,21 @@ std::vector<std::uint8_t> insideOf(const std::vector<std::uint8_t>& bordered, in
   return out;
 }
 
+/// The vegetation layer's densities of `species`, row-major size · size.
+std::vector<double> vegetationOf(const construction::World& world, const tiling::WaterMask& water,
+                                 const tiling::SampleGrid& grid, const layers::BorderedHeights& h,
+                                 const layers::Species& species) {
+  const int size = h.width, border = h.border;
+  if (size % 2 == 0) // the costly sky view and wetness at the even pixels, interpolated
+    return layers::vegetationDensityRaster(species, h,
+                                           layers::riverWetnessEven(world, grid, border),
+                                           water.ofGrid(layers::samplesInside(grid, border, 1)));
+  return layers::vegetationDensity(
+      species, layers::sedimentThickness(h), layers::skyView(h, 1),
+      layers::humidity(h, layers::riverWetness(world, grid, border, 1)),
+      insideOf(water.ofGrid(grid), size, border));
+}
+
 } // namespace
 
 LayerRenderer::LayerRenderer(const construction::World& world)
@@ -131,17 +147,12 @@ base::Result<RenderedTile> LayerRenderer::render(const RenderContext& context,
   case LayerName::kSediment:
     bytes = grey8(layers::sedimentThickness(h), 100.0, size); // centimetres
     break;
-  case LayerName::kVegetation: {
-    const std::vector<double> humidity =
-        layers::humidity(h, layers::riverWetness(world_, grid, border, skyStep(size)));
-    const std::vector<std::uint8_t> water = insideOf(water_.ofGrid(grid), size, border);
-    bytes =
-        grey8(layers::vegetationDensity(
-                  layers::speciesOf(world_.data().params, static_cast<std::size_t>(layer.species)),
-                  layers::sedimentThickness(h), layers::skyView(h, skyStep(size)), humidity, water),
-              255.0, size);
+  case LayerName::kVegetation:
+    bytes = grey8(vegetationOf(world_, water_, grid, h,
+                               layers::speciesOf(world_.data().params,
+                                                 static_cast<std::size_t>(layer.species))),
+                  255.0, size);
     break;
-  }
   case LayerName::kWater: // answered above
     break;
   }

@@ -75,6 +75,7 @@ base::Result<std::string> OrderedRenderer::render(std::uint64_t id) const {
   request.format = job_.format;
   request.options.size = job_.size;
   request.options.gzip = job_.gzip;
+  request.options.layer = job_.layer;
   try {
     STRAHLER_ASSIGN_OR_RETURN(RenderedTile tile, service_.render(request));
     return std::move(tile.bytes);

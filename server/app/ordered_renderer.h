@@ -20,7 +20,8 @@ struct RenderJob {
   TileFormat format = TileFormat::kTerrainRgb;
   int size = 0; ///< 0: the format's default.
   int threads = 1;
-  bool gzip = false; ///< Gzip the bytes (vector tiles in archives).
+  bool gzip = false;  ///< Gzip the bytes (vector tiles in archives).
+  LayerOptions layer; ///< TileFormat::kLayerPng: the layer and its parameters.
 };
 
 /// Tiles rendered on worker threads and taken in plan order by one writer thread: workers

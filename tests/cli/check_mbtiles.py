@@ -7,6 +7,9 @@ the `tiles` view over the deduplicated map/images tables, the TMS row flip
 (tile_row = 2^z - 1 - y), and the bytes of sampled tiles against `strahler tile` (the server's
 code path) for the same XYZ tile. Then <dir>/world-vector.mbtiles (`--tile mvt`): format pbf, the
 "json" row's vector_layers, and sampled tiles that gunzip to `strahler tile --format mvt`'s bytes.
+Then <dir>/world-layer.mbtiles (`--layer vegetation --species bush`): format png, the rows naming
+the layer, its parameters and encoding (no raster-dem encoding), and sampled tiles equal to
+`strahler tile --layer vegetation --species bush`'s bytes.
 
 Usage: check_mbtiles.py <dir> <strahler> <minzoom> <maxzoom>. Exits 1 on any mismatch.
 """
@@ -86,6 +89,7 @@ def main():
                 compared += 1
     print(f"OK: {compared} tiles identical to strahler tile's, {tiles} tiles, {images} distinct")
     check_vector(folder, strahler)
+    check_layer(folder, strahler)
 
 
 def check_vector(folder, strahler):
@@ -112,6 +116,37 @@ def check_vector(folder, strahler):
                 if gzip.decompress(bytes(data)) != f.read():
                     fail(f"vector tile {z}/{x}/{y} does not gunzip to strahler tile's bytes")
     print(f"OK: {len(rows)} vector tiles gunzip to strahler tile's, layers {sorted(layers)}")
+
+
+def check_layer(folder, strahler):
+    """world-layer.mbtiles: a png tileset of one layer's grey tiles, the layer named."""
+    db = sqlite3.connect(f"file:{os.path.join(folder, 'world-layer.mbtiles')}?mode=ro", uri=True)
+    meta = dict(db.execute("SELECT name, value FROM metadata"))
+    if meta.get("format") != "png" or "encoding" in meta:
+        fail(f"layer metadata format/encoding: {meta}")
+    if meta.get("layer") != "vegetation" or meta.get("layerQuery") != "species=bush":
+        fail(f"layer metadata layer/layerQuery: {meta}")
+    if not meta.get("layerEncoding", "").startswith("strahler vegetation: 8-bit grey PNG"):
+        fail(f"layer metadata layerEncoding: {meta}")
+    zooms = [z for (z,) in db.execute("SELECT DISTINCT zoom_level FROM tiles ORDER BY zoom_level")]
+    if zooms != [9, 10, 11]:
+        fail(f"layer zoom levels {zooms}")
+    # The largest tiles of each zoom: the ones with the most vegetation.
+    rows = []
+    for z in zooms:
+        rows += db.execute("SELECT zoom_level, tile_column, tile_row, tile_data FROM tiles "
+                           "WHERE zoom_level = ? ORDER BY length(tile_data) DESC LIMIT 2", (z,)).fetchall()
+    with tempfile.TemporaryDirectory(dir=folder) as scratch:
+        for z, x, tms, data in rows:
+            y = 2 ** z - 1 - tms
+            out = os.path.join(scratch, f"{z}-{x}-{y}.png")
+            subprocess.run([strahler, "tile", os.path.join(folder, "world.world"), "--scheme", "web",
+                            "--z", str(z), "--x", str(x), "--y", str(y), "--layer", "vegetation",
+                            "--species", "bush", "-o", out], check=True, stderr=subprocess.DEVNULL)
+            with open(out, "rb") as f:
+                if bytes(data) != f.read():
+                    fail(f"layer tile {z}/{x}/{y} differs from strahler tile --layer's bytes")
+    print(f"OK: {len(rows)} layer tiles identical to strahler tile --layer's")
 
 
 if __name__ == "__main__":

@@ -157,6 +157,33 @@ TEST(ExportCommand, ArchivesColourReliefTilesAsStrahlerTileWritesThem) {
   EXPECT_TRUE(stored == readWholeFile(tile)) << "archive and strahler tile bytes differ";
 }
 
+TEST(ExportCommand, ArchivesLayerTilesAsStrahlerTileLayerWritesThem) {
+  const fs::path dir = outputDir("layer");
+  const fs::path out = dir / "a.pmtiles";
+  const std::string layer = " --layer hillshade --azimuth 270 --altitude 30";
+  const ProcessRun run = strahler("export " + islandWorld().string() + " --zooms 11-12" + layer +
+                                  " -o " + out.string());
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const std::string archive = readWholeFile(out);
+  const pm::Header h = strahler::test_support::valueOf(pm::decodeHeader(archive));
+  EXPECT_EQ(h.tileType, pm::TileType::kPng);
+  EXPECT_EQ(h.tileCompression, pm::Compression::kNone);
+  const std::string metadata = strahler::test_support::valueOf(
+      pm::decompress(archive.substr(h.metadataOffset, h.metadataLength), h.internalCompression));
+  for (const char* part :
+       {"\"layer\":\"hillshade\"", "\"layerQuery\":\"azimuth=270&altitude=30\"",
+        "\"layerEncoding\":\"strahler hillshade: 8-bit grey PNG", "\"format\":\"png\""})
+    EXPECT_NE(metadata.find(part), std::string::npos) << part << " in " << metadata;
+  EXPECT_EQ(metadata.find("\"encoding\""), std::string::npos) << "not a heightmap: " << metadata;
+  const fs::path tile = dir / "t.png";
+  const ProcessRun one = strahler("tile " + islandWorld().string() + " --z 12 --x 1736 --y 1494" +
+                                  layer + " -o " + tile.string());
+  ASSERT_EQ(one.exitCode, 0) << one.err;
+  const std::string stored = pmtilesTile(archive, 12, 1736, 1494);
+  EXPECT_FALSE(stored.empty());
+  EXPECT_TRUE(stored == readWholeFile(tile)) << "archive and strahler tile --layer bytes differ";
+}
+
 /// Starts an export that runs for many seconds, sends `signal` once its temporary file exists,
 /// and checks that the process dies by it leaving no file behind.
 void interruptExport(int signal, const std::string& ext) {
@@ -211,6 +238,18 @@ TEST(ExportCommand, RefusesBadInputWithAPreciseMessageAndLeavesNothing) {
       {world + " --zooms 0-3 --tile glb" + out, 2, "--tile glb: archives hold PNG tiles"},
       {world + " --zooms 0-3 --tile webm" + out, 2, "unknown tile format 'webm'"},
       {world + " --zooms 0-3 --scheme local" + out, 2, "archives hold Web Mercator tiles"},
+      {world + " --zooms 0-3 --layer nope" + out, 2,
+       "unknown layer 'nope' (layers: slope, aspect, illumination, hillshade, humidity, "
+       "sediment, vegetation, water)"},
+      {world + " --zooms 0-3 --layer slope --tile png" + out, 2,
+       "--layer slope and --tile png: a layer archive holds the layer's grey PNGs; give one of "
+       "them"},
+      {world + " --zooms 0-3 --species bush" + out, 2, "--species needs --layer"},
+      {world + " --zooms 0-3 --layer slope --species bush" + out, 2,
+       "'species' is a parameter of the vegetation layer only, not of slope"},
+      {world + " --zooms 0-3 --layer vegetation --species oak" + out, 2, "unknown species 'oak'"},
+      {world + " --zooms 0-3 --layer hillshade --azimuth 400" + out, 2,
+       "azimuth must be in [0, 360) degrees"},
       {world + " --zooms 0-3 --size 2000" + out, 2, "option '--size' must be an integer in [16"},
       {world + " --zooms 0-3 -o " + (dir / "a.zip").string(), 2,
        "cannot tell the archive format from"},
@@ -241,6 +280,7 @@ TEST(ExportCommand, IsInTheUsageText) {
   const ProcessRun help = strahler("export --help");
   EXPECT_EQ(help.exitCode, 0);
   EXPECT_NE(help.out.find("--zooms A-B"), std::string::npos);
+  EXPECT_NE(help.out.find("--layer NAME"), std::string::npos);
 }
 
 } // namespace

@@ -38,6 +38,22 @@ struct Humidity {
 std::vector<double> riverWetness(const construction::World& world, const tiling::SampleGrid& grid,
                                  int border, int step = 1);
 
+/// riverWetness() at step 2 without the interpolation: the values at every other sample of
+/// every other row inside the border, the last row and column the border's first, (inside / 2
+/// + 1) per row, inside / 2 + 1 rows (the even pixels of vegetationDensityRaster()).
+std::vector<double> riverWetnessEven(const construction::World& world,
+                                     const tiling::SampleGrid& grid, int border);
+
+/// The samples of the bordered raster `grid` inside its border of `border` samples, as a raster
+/// grid of their own: step 1 every one (inside width × height); step 2 every other sample of
+/// every other row from the first inside, the last ones the border's first ((inside / 2 + 1)²
+/// for a square; asserts border ≥ 1 and an even inside).
+tiling::SampleGrid samplesInside(const tiling::SampleGrid& grid, int border, int step);
+
+/// The local wetness index of Humidity at a point of slope `tanSlope` (tan β) and concavity
+/// `concavity` (concavityAt()), 0 … Humidity::kLocalWeight.
+double localWetness(double tanSlope, double concavity) noexcept;
+
 /// H of every pixel, row-major width · height; `wetness` is riverWetness() of the bordered
 /// grid of `grid`'s samples (one value per pixel).
 std::vector<double> humidity(const BorderedHeights& grid, std::span<const double> wetness);

@@ -17,6 +17,10 @@ struct Sediment {
   static constexpr double kConcavityScale = 0.05; ///< c at which C reaches 1 (m per m).
 };
 
+/// S at a point whose slope is `tanSlope` (tan β, |gradient|) and concavity `concavity`
+/// (concavityAt()), m: what sedimentThickness() computes at each pixel.
+double sedimentOf(double tanSlope, double concavity) noexcept;
+
 /// Sediment thickness of every pixel, m (0 … Sediment::kMaxM), row-major width · height.
 std::vector<double> sedimentThickness(const BorderedHeights& grid);
 

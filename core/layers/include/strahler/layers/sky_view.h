@@ -2,6 +2,8 @@
 
 #include "strahler/layers/bordered_heights.h"
 
+#include <cstdint>
+#include <span>
 #include <vector>
 
 namespace strahler::layers {
@@ -27,5 +29,12 @@ struct SkyView {
 /// other row and interpolates bilinearly between them, a quarter of the rays for the 1.5×
 /// cost budget (docs/performance.md). Asserts grid.border ≥ SkyView::kReach + step − 1.
 std::vector<double> skyView(const BorderedHeights& grid, int step = 1);
+
+/// skyView() at step 2 without the interpolation: the values at the even pixels (2i, 2j), i ≤
+/// width / 2, j ≤ height / 2 (the last ones in the border), (width / 2 + 1) per row. With
+/// `wanted` (one flag per value), only the flagged values are computed, the others are 1.
+/// Asserts an even raster and grid.border ≥ SkyView::kReach + 1.
+std::vector<double> skyViewEven(const BorderedHeights& grid,
+                                std::span<const std::uint8_t> wanted = {});
 
 } // namespace strahler::layers
