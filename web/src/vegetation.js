@@ -85,6 +85,7 @@ export class VegetationLayer {
     this.tiles = new Map(); // "species/z/x/y" -> { state, instances, lastNeeded }
     this.inFlight = 0;
     this.dirty = false;
+    this.settled = false; // every tile the last update() wanted has loaded (or failed)
     this.stats = { requested: 0, loaded: 0, failed: 0, dropped: 0, tree: 0, bush: 0, instances: 0 };
     this.kinds = [TREES, BUSHES].map((kind) => ({ ...kind, parts: kind === TREES ? treeParts() : bushParts(), meshes: [] }));
   }
@@ -116,6 +117,7 @@ export class VegetationLayer {
       if (this.inFlight >= this.maxInFlight) break;
       if (!this.tiles.has(w.key)) this.request(w);
     }
+    this.settled = wanted.every((w) => this.tiles.has(w.key) && this.tiles.get(w.key).state !== 'loading');
     // Drop what is far behind (hysteresis: the tiles still wanted stay).
     for (const [key, tile] of this.tiles) {
       if (needed.has(key)) tile.lastNeeded = performance.now();

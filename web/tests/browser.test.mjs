@@ -506,15 +506,20 @@ describe('game client vegetation', () => {
     assert.ok(spots.length > 0, 'no low land found on the terrain');
     let stats;
     for (const [x, h, z] of spots.slice(0, 6)) {
-      await page.evaluate(([x, h, z]) => {
-        const { camera } = window.strahlerGame;
+      // Wait for a dozen frames at the new position (update() has seen it with the ground under
+      // it, sampled every ten frames) and every vegetation tile it wants loaded: waiting for the
+      // first answers alone raced the later requests (trees missed one run in three).
+      const frame = await page.evaluate(([x, h, z]) => {
+        const { camera, frames } = window.strahlerGame;
         camera.position.set(x, h + 25, z);
         camera.rotation.set(-0.15, 0.4, 0, 'YXZ');
+        return frames;
       }, [x, h, z]);
-      await page.waitForFunction(() => {
+      await page.waitForFunction((frame) => {
         const g = window.strahlerGame;
-        return g.vegetation.stats.requested > 0 && g.vegetation.inFlight === 0 && g.stats.inFlight === 0;
-      }, null, { timeout: STEP_MS, polling: 200 });
+        return g.frames > frame + 12 && g.vegetation.settled && g.vegetation.stats.requested > 0 &&
+          g.vegetation.inFlight === 0 && g.stats.inFlight === 0;
+      }, frame, { timeout: STEP_MS, polling: 200 });
       stats = await vegetation();
       if (stats.tree > 0) break;
     }
