@@ -15,18 +15,7 @@ import { execFileSync } from "node:child_process";
 import fs from "node:fs";
 import path from "node:path";
 
-function fail(message) {
-  console.error(`FAIL: ${message}`);
-  process.exit(1);
-}
-
-async function load(name) {
-  try {
-    return await import(name);
-  } catch (error) {
-    fail(`cannot load ${name} (${error.message}).\nInstall the test decoders first: npm ci --prefix tests/node`);
-  }
-}
+import { fail, load, openPmtiles } from "./pmtiles_file.mjs";
 
 const [dir, strahler, minZoomArg, maxZoomArg] = process.argv.slice(2);
 if (!dir || !strahler || minZoomArg === undefined || maxZoomArg === undefined) {
@@ -34,28 +23,12 @@ if (!dir || !strahler || minZoomArg === undefined || maxZoomArg === undefined) {
 }
 const minZoom = Number(minZoomArg);
 const maxZoom = Number(maxZoomArg);
-const { PMTiles } = await load("pmtiles");
 const { PNG } = await load("pngjs");
 
 // A Source over a local file: the library asks for byte ranges, as it would over HTTP.
-class FileRangeSource {
-  constructor(file) {
-    this.file = file;
-    this.fd = fs.openSync(file, "r");
-  }
-  getKey() {
-    return this.file;
-  }
-  async getBytes(offset, length) {
-    const buffer = Buffer.alloc(length);
-    const read = fs.readSync(this.fd, buffer, 0, length, offset);
-    return { data: buffer.buffer.slice(buffer.byteOffset, buffer.byteOffset + read) };
-  }
-}
-
 const archivePath = path.join(dir, "world.pmtiles");
 const worldPath = path.join(dir, "world.world");
-const archive = new PMTiles(new FileRangeSource(archivePath));
+const archive = await openPmtiles(archivePath);
 const header = await archive.getHeader();
 const metadata = await archive.getMetadata();
 let checks = 0;

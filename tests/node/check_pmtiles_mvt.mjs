@@ -12,41 +12,14 @@ import fs from "node:fs";
 import path from "node:path";
 import zlib from "node:zlib";
 
-function fail(message) {
-  console.error(`FAIL: ${message}`);
-  process.exit(1);
-}
-
-async function load(name) {
-  try {
-    return await import(name);
-  } catch (error) {
-    fail(`cannot load ${name} (${error.message}).\nInstall the test decoders first: npm ci --prefix tests/node`);
-  }
-}
+import { fail, load, openPmtiles } from "./pmtiles_file.mjs";
 
 const [dir, strahler] = process.argv.slice(2);
 if (!dir || !strahler) fail("usage: node check_pmtiles_mvt.mjs <dir> <strahler>");
-const { PMTiles } = await load("pmtiles");
 const { VectorTile } = await load("@mapbox/vector-tile");
 const { PbfReader } = await load("pbf");
 
-class FileRangeSource {
-  constructor(file) {
-    this.file = file;
-    this.fd = fs.openSync(file, "r");
-  }
-  getKey() {
-    return this.file;
-  }
-  async getBytes(offset, length) {
-    const buffer = Buffer.alloc(length);
-    const read = fs.readSync(this.fd, buffer, 0, length, offset);
-    return { data: buffer.buffer.slice(buffer.byteOffset, buffer.byteOffset + read) };
-  }
-}
-
-const archive = new PMTiles(new FileRangeSource(path.join(dir, "world-vector.pmtiles")));
+const archive = await openPmtiles(path.join(dir, "world-vector.pmtiles"));
 const header = await archive.getHeader();
 const metadata = await archive.getMetadata();
 if (header.tileType !== 1) fail(`tile type ${header.tileType} (1: mvt)`);
