@@ -4,12 +4,10 @@
 // sockets (ETag, 304, CORS, TileJSON, 400/404 with their messages).
 #include "layer_route.h"
 #include "test_worlds.h"
-#include "tile_server.h"
 #include "tile_server_harness.h"
 #include "tile_service.h"
 
 #include "strahler/construction/world_builder.h"
-#include "strahler/http/http_server.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -222,22 +220,8 @@ HttpResponse get(std::uint16_t port, const std::string& target, const std::strin
 }
 
 TEST(LayerTile, IsServedLikeEveryOtherTile) {
-  TileServerOptions tileOptions;
-  tileOptions.workers = 2;
-  TileServer tiles({{"island", island()}}, tileOptions);
-  http::ServerOptions options;
-  options.port = 0;
-  options.accessLog = false;
-  http::Server server(
-      options,
-      [&](const http::Request& r, std::function<void(http::Response)> done) {
-        tiles.handle(r, std::move(done));
-      },
-      [&](const std::string& route, int status, std::size_t bytes, double ms) {
-        tiles.observe(route, status, bytes, ms);
-      });
-  ASSERT_TRUE(server.start().ok());
-  const std::uint16_t port = server.port();
+  test_support::Running s; // the default island as "island", two workers
+  const std::uint16_t port = s.port();
   const std::string path = "/worlds/island/layers/slope/12/1736/1494.png";
   HttpResponse tile = get(port, path);
   ASSERT_EQ(tile.status, 200) << tile.body;
@@ -286,7 +270,7 @@ TEST(LayerTile, IsServedLikeEveryOtherTile) {
   HttpResponse deep = get(port, "/worlds/island/layers/slope/19/0/0.png");
   EXPECT_EQ(deep.status, 404);
   EXPECT_NE(deep.body.find("zoom 0..18"), std::string::npos) << deep.body;
-  server.stop();
+  s.server.stop();
 }
 
 } // namespace

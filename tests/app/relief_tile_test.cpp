@@ -1,13 +1,11 @@
 // Colour-relief tiles (.relief): the heightmap tiles' samples, seamless hillshade across tile
 // edges, and the tile pipeline's HTTP rules (ETag, 304, CORS, sizes) over real sockets.
 #include "test_worlds.h"
-#include "tile_server.h"
 #include "tile_server_harness.h"
 #include "tile_service.h"
 
 #include "strahler/construction/world_builder.h"
 #include "strahler/encoding/rgb_png.h"
-#include "strahler/http/http_server.h"
 #include "strahler/render/shaded_relief.h"
 #include "strahler/tiling/tile_evaluator.h"
 
@@ -141,22 +139,8 @@ HttpResponse get(std::uint16_t port, const std::string& target, const std::strin
 }
 
 TEST(ReliefTile, IsServedLikeEveryOtherTile) {
-  TileServerOptions tileOptions;
-  tileOptions.workers = 2;
-  TileServer tiles({{"island", island()}}, tileOptions);
-  http::ServerOptions options;
-  options.port = 0;
-  options.accessLog = false;
-  http::Server server(
-      options,
-      [&](const http::Request& r, std::function<void(http::Response)> done) {
-        tiles.handle(r, std::move(done));
-      },
-      [&](const std::string& route, int status, std::size_t bytes, double ms) {
-        tiles.observe(route, status, bytes, ms);
-      });
-  ASSERT_TRUE(server.start().ok());
-  const std::uint16_t port = server.port();
+  test_support::Running s; // the default island as "island", two workers
+  const std::uint16_t port = s.port();
   const std::string path = "/worlds/island/tiles/12/1736/1494.relief";
   HttpResponse tile = get(port, path);
   ASSERT_EQ(tile.status, 200) << tile.body;
@@ -193,7 +177,7 @@ TEST(ReliefTile, IsServedLikeEveryOtherTile) {
   for (const std::string bad : {"?size=8", "?size=2000", "?size=abc", "?encoding=terrarium"})
     EXPECT_EQ(get(port, path + bad).status, 400) << bad;
   EXPECT_EQ(get(port, "/worlds/island/tiles/19/0/0.relief").status, 404);
-  server.stop();
+  s.server.stop();
 }
 
 } // namespace
