@@ -2,11 +2,8 @@
 // z12 and z14, through the tile service, with its cost as a ratio to the 256² Terrain-RGB
 // heightmap tile of the same zoom and place timed in the same benchmark (target ≤ 1.5).
 // Run with `taskset -c 1 build/release/tests/bench/strahler_layer_bench`.
-#include "test_worlds.h"
-#include "tile_service.h"
+#include "mallorca_service.h"
 #include "web_tiles.h"
-
-#include "strahler/construction/world_builder.h"
 
 #include <benchmark/benchmark.h>
 
@@ -18,13 +15,10 @@ namespace strahler {
 namespace {
 
 const app::TileService& service() {
-  static const app::TileService s(
-      construction::generateWorldData(test_support::mallorcaSpec(), "bench").value());
-  return s;
+  return bench::mallorcaService();
 }
 
-/// The centre of Mallorca's Serra de Tramuntana (its highest relief).
-constexpr double kLon = 2.75, kLat = 39.78;
+constexpr double kLon = bench::kTramuntanaLon, kLat = bench::kTramuntanaLat;
 
 /// This thread's CPU time, ms (a shared machine's other work does not count).
 double threadCpuMs() {

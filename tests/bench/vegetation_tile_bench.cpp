@@ -2,11 +2,8 @@
 // Mallorca's Serra de Tramuntana through the tile service: the lattice's heights and layers,
 // the placement and the JSON. Run with `taskset -c 1
 // build/release/tests/bench/strahler_vegetation_tile_bench`.
-#include "test_worlds.h"
-#include "tile_service.h"
+#include "mallorca_service.h"
 #include "web_tiles.h"
-
-#include "strahler/construction/world_builder.h"
 
 #include <benchmark/benchmark.h>
 
@@ -16,9 +13,7 @@ namespace strahler {
 namespace {
 
 const app::TileService& service() {
-  static const app::TileService s(
-      construction::generateWorldData(test_support::mallorcaSpec(), "bench").value());
-  return s;
+  return bench::mallorcaService();
 }
 
 /// A valley of the Serra de Tramuntana's southern slope (trees and bushes).
