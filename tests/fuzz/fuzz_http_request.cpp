@@ -2,7 +2,7 @@
 // server/http/src/session.cpp handles them: Beast's header parser with the server's limits, the
 // protocol rules (checkRequest / checkParseError), the response as written (toWireResponse,
 // appendHead), and for forwarded requests the router's parsers (parseTarget, parseTileRoute,
-// parseVectorTileRoute)
+// parseVectorTileRoute, parseVegetationRoute)
 // with JSON error answers quoting the client's bytes. Pipelined requests are followed while the
 // connection would stay open. (The tile server itself needs a world and the terrain code:
 // tests/app covers its dispatch.)
@@ -10,6 +10,7 @@
 #include "route_parser.h"
 #include "tile_route.h"
 #include "vector_route.h"
+#include "vegetation_route.h"
 #include "wire_response.h"
 
 #include <boost/asio/buffer.hpp>
@@ -47,10 +48,13 @@ bool route(const strahler::http::Request& request, unsigned version, bool keepAl
     response = strahler::http::errorResponse(400, parsed.error().message);
     response.close = true;
   } else if (const auto& s = parsed.value().segments; s.size() == 6 && s[0] == "worlds") {
-    const auto tile = s[2] == "vector"
-                          ? strahler::app::parseVectorTileRoute(s[1], s, parsed.value().query,
-                                                                request.header("accept-encoding"))
-                          : strahler::app::parseTileRoute(s[1], s, parsed.value().query);
+    const auto& query = parsed.value().query;
+    const auto tile =
+        s[2] == "vector"
+            ? strahler::app::parseVectorTileRoute(s[1], s, query, request.header("accept-encoding"))
+        : s[2] == "vegetation"
+            ? strahler::app::parseVegetationRoute(s[1], s, query, request.header("accept-encoding"))
+            : strahler::app::parseTileRoute(s[1], s, query);
     if (!tile) {
       response = strahler::http::errorResponse(400, tile.error().message);
       response.close = true;
