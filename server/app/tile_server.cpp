@@ -33,6 +33,27 @@ http::Response jsonResponse(std::string body, const std::string& route) {
   return r;
 }
 
+/// The tile that `target` asks for, read by the route parser of its tile endpoint.
+base::Result<TileRequest> parseTileEndpoint(Endpoint endpoint, const std::string& world,
+                                            const ParsedTarget& target,
+                                            const http::Request& request) {
+  switch (endpoint) {
+  case Endpoint::kLayerTile:
+    return parseLayerRoute(world, target.segments, target.query);
+  case Endpoint::kCesiumTerrain:
+    return parseCesiumTerrainRoute(world, target.segments, target.query, request.header("accept"),
+                                   request.header("accept-encoding"));
+  case Endpoint::kVectorTile:
+    return parseVectorTileRoute(world, target.segments, target.query,
+                                request.header("accept-encoding"));
+  case Endpoint::kVegetationTile:
+    return parseVegetationRoute(world, target.segments, target.query,
+                                request.header("accept-encoding"));
+  default:
+    return parseTileRoute(world, target.segments, target.query);
+  }
+}
+
 } // namespace
 
 struct TileServer::ServedWorld {
@@ -180,10 +201,17 @@ void TileServer::handleWorld(const ServedWorld& w, Endpoint endpoint, const Pars
     r.route = "features";
     return done(std::move(r));
   }
-  case Endpoint::kTile: {
-    auto parsed = parseTileRoute(w.id, target.segments, target.query);
+  case Endpoint::kTile:
+  case Endpoint::kLayerTile:
+  case Endpoint::kCesiumTerrain:
+  case Endpoint::kVectorTile:
+  case Endpoint::kVegetationTile: {
+    // Every kind of tile: its route's parser, then the one pipeline. An unknown layer or
+    // species is 404; any other refusal of the route is 400.
+    auto parsed = parseTileEndpoint(endpoint, w.id, target, request);
     if (!parsed)
-      return done(http::errorResponse(400, parsed.error().message));
+      return done(http::errorResponse(parsed.error().code == base::ErrorCode::kNotFound ? 404 : 400,
+                                      parsed.error().message));
     return tile(w, parsed.value(), request, std::move(done));
   }
   case Endpoint::kCesiumLayer:
@@ -198,21 +226,6 @@ void TileServer::handleWorld(const ServedWorld& w, Endpoint endpoint, const Pars
                                       layer.error().message));
     return done(tileJson(w, request, &layer.value()));
   }
-  case Endpoint::kLayerTile: {
-    auto parsed = parseLayerRoute(w.id, target.segments, target.query);
-    if (!parsed)
-      return done(http::errorResponse(parsed.error().code == base::ErrorCode::kNotFound ? 404 : 400,
-                                      parsed.error().message));
-    return tile(w, parsed.value(), request, std::move(done));
-  }
-  case Endpoint::kCesiumTerrain: {
-    auto parsed =
-        parseCesiumTerrainRoute(w.id, target.segments, target.query, request.header("accept"),
-                                request.header("accept-encoding"));
-    if (!parsed)
-      return done(http::errorResponse(400, parsed.error().message));
-    return tile(w, parsed.value(), request, std::move(done));
-  }
   case Endpoint::kVectorTileJson: {
     const auto origin = requestOrigin(options_.publicUrl, request);
     if (!origin)
@@ -224,20 +237,6 @@ void TileServer::handleWorld(const ServedWorld& w, Endpoint endpoint, const Pars
     if (options_.publicUrl.empty()) // as tileJson(): the URLs depend on these headers
       r.headers.emplace_back("Vary", "X-Forwarded-Proto, X-Forwarded-Host");
     return done(std::move(r));
-  }
-  case Endpoint::kVectorTile: {
-    auto parsed = parseVectorTileRoute(w.id, target.segments, target.query,
-                                       request.header("accept-encoding"));
-    if (!parsed)
-      return done(http::errorResponse(400, parsed.error().message));
-    return tile(w, parsed.value(), request, std::move(done));
-  }
-  case Endpoint::kVegetationTile: {
-    auto parsed = parseVegetationRoute(w.id, target.segments, target.query,
-                                       request.header("accept-encoding"));
-    if (!parsed)
-      return done(http::errorResponse(400, parsed.error().message));
-    return tile(w, parsed.value(), request, std::move(done));
   }
   default:
     return done(http::errorResponse(404, "no such resource under /worlds/" + w.id));
