@@ -1,5 +1,6 @@
 #include "export_command.h"
 
+#include "atomic_output.h"
 #include "cli_args.h"
 #include "command_support.h"
 #include "export_plan.h"
@@ -160,109 +161,6 @@ base::Result<ExportOptions> parseOptions(const CliArgs& args) {
   return o;
 }
 
-/// kIoError naming `output` when its folder is missing or not writable, or it is a folder.
-base::Status checkWritable(const std::string& output) {
-  const fs::path path(output);
-  const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (fs::is_directory(path, ec))
-    return makeError(ErrorCode::kIoError, "cannot write '" + output + "': it is a folder");
-  if (!fs::is_directory(folder, ec))
-    return makeError(ErrorCode::kIoError,
-                     "cannot write '" + output + "': no folder '" + folder.string() + "'");
-  if (::access(folder.c_str(), W_OK) != 0)
-    return makeError(ErrorCode::kIoError, "cannot write '" + output + "': folder '" +
-                                              folder.string() + "' is not writable");
-  return base::Ok{};
-}
-
-// --- Interruption -----------------------------------------------------------------------------
-
-std::atomic<int> gSignal{0};
-
-extern "C" void noteSignal(int signal) {
-  gSignal.store(signal);
-}
-
-/// While alive, SIGINT and SIGTERM only set gSignal (the export stops at the next tile and
-/// cleans up); the previous handlers come back after.
-class SignalCatcher {
-public:
-  SignalCatcher() {
-    struct sigaction action = {};
-    action.sa_handler = noteSignal;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &oldInt_);
-    sigaction(SIGTERM, &action, &oldTerm_);
-  }
-  ~SignalCatcher() {
-    sigaction(SIGINT, &oldInt_, nullptr);
-    sigaction(SIGTERM, &oldTerm_, nullptr);
-  }
-  SignalCatcher(const SignalCatcher&) = delete;
-  SignalCatcher& operator=(const SignalCatcher&) = delete;
-
-private:
-  struct sigaction oldInt_ = {};
-  struct sigaction oldTerm_ = {};
-};
-
-/// FILE.tmp.PID beside FILE: removed when destroyed unless commit() renamed it to FILE.
-class TemporaryOutput {
-public:
-  explicit TemporaryOutput(std::string final)
-      : final_(std::move(final)), path_(final_ + ".tmp." + std::to_string(::getpid())) {
-    std::error_code ignored;
-    fs::remove(path_, ignored);
-  }
-  ~TemporaryOutput() { discard(); }
-  TemporaryOutput(const TemporaryOutput&) = delete;
-  TemporaryOutput& operator=(const TemporaryOutput&) = delete;
-
-  const std::string& path() const noexcept { return path_; }
-  base::Status commit() {
-    // The data reaches the disk before the name does (SQLite runs with synchronous = OFF).
-    if (const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC); fd >= 0) {
-      ::fsync(fd);
-      ::close(fd);
-    }
-    std::error_code ec;
-    fs::rename(path_, final_, ec);
-    if (ec)
-      return makeError(ErrorCode::kIoError, "cannot write '" + final_ + "': " + ec.message());
-    committed_ = true;
-    return base::Ok{};
-  }
-  /// Removes the file now (before dying by a signal, when no destructor runs).
-  void discard() {
-    if (committed_)
-      return;
-    std::error_code ignored;
-    fs::remove(path_, ignored);
-    committed_ = true;
-  }
-
-private:
-  std::string final_;
-  std::string path_;
-  bool committed_ = false;
-};
-
-// --- Rendering --------------------------------------------------------------------------------
-
-std::string formatSeconds(double s) {
-  char text[32];
-  if (s < 60)
-    std::snprintf(text, sizeof text, "%.0fs", s);
-  else if (s < 3600)
-    std::snprintf(text, sizeof text, "%dm%02ds", static_cast<int>(s / 60),
-                  static_cast<int>(s) % 60);
-  else
-    std::snprintf(text, sizeof text, "%dh%02dm", static_cast<int>(s / 3600),
-                  static_cast<int>(s / 60) % 60);
-  return text;
-}
-
 /// Shows progress with an ETA at most every 200 ms.
 void showProgress(TerminalProgress& progress, std::size_t done, std::size_t total,
                   Clock::time_point start, Clock::time_point& last) {
@@ -290,7 +188,7 @@ base::Status renderInOrder(const TileService& service, const ExportOptions& opti
   const auto start = Clock::now();
   auto last = start - std::chrono::seconds(1);
   for (std::size_t written = 0; written < ids.size();) {
-    if (gSignal.load() != 0)
+    if (caughtSignal() != 0)
       return makeError(ErrorCode::kInternal, "interrupted");
     std::optional<std::string> bytes = renderer.take(std::chrono::milliseconds(100));
     if (!bytes) {
@@ -380,16 +278,9 @@ base::Status writeArchive(const TileService& service, const ExportOptions& o,
   }
   STRAHLER_RETURN_IF_ERROR(sink->finish(metadata));
   stats = sink->stats();
-  if (gSignal.load() != 0) // arrived while the indexes were written
+  if (caughtSignal() != 0) // arrived while the indexes were written
     return makeError(ErrorCode::kInternal, "interrupted");
   return temporary.commit();
-}
-
-/// Dies by `signal` as if never caught (the shell sees 128 + signal); returns if it cannot.
-int dieBy(int signal) {
-  std::signal(signal, SIG_DFL);
-  std::raise(signal);
-  return 128 + signal;
 }
 
 /// Prints the summary line on stderr.
@@ -427,7 +318,7 @@ int exportWorld(const ExportOptions& o, construction::WorldData world) {
   const archive::ArchiveMetadata metadata = metadataFor(world, o, *box);
   const TileService service(std::move(world));
   const std::vector<std::uint64_t> ids = hilbertOrder(rects);
-  gSignal.store(0);
+  clearCaughtSignal();
   const SignalCatcher catcher;
   TemporaryOutput temporary(o.output);
   archive::ArchiveStats stats;
@@ -437,7 +328,7 @@ int exportWorld(const ExportOptions& o, construction::WorldData world) {
   } catch (const std::exception& e) { // never leave without removing the temporary file
     status = makeError(ErrorCode::kInternal, std::string("export failed: ") + e.what());
   }
-  if (const int signal = gSignal.load(); signal != 0 && !status) {
+  if (const int signal = caughtSignal(); signal != 0 && !status) {
     std::fprintf(stderr, "strahler: interrupted by %s: no archive written\n",
                  signal == SIGINT ? "SIGINT" : "SIGTERM");
     temporary.discard();

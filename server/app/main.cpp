@@ -1,6 +1,7 @@
 // strahler: procedural river networks and terrain (Génevaux et al. 2013), served as tiles.
 #include "export_command.h"
 #include "generate_command.h"
+#include "heightmap_export_command.h"
 #include "serve_command.h"
 #include "world_commands.h"
 
@@ -21,6 +22,7 @@ constexpr const char* kUsage =
     "  analyze    check drainage and river profiles of a world file (JSON)\n"
     "  tile       write one heightmap or mesh tile of a world file\n"
     "  export     write a world's tiles to a PMTiles or MBTiles archive (static hosting)\n"
+    "  export-heightmap  write a 16-bit heightmap of a box for Unity, Unreal or Godot\n"
     "  serve      serve worlds over HTTP (viewer, TileJSON, tiles, metrics)\n"
     "  help       show this text (strahler <command> --help for a command's options)\n"
     "  version    print the version and the terrain generator's version\n";
@@ -47,6 +49,8 @@ int main(int argc, char** argv) {
     return strahler::app::runTile(rest);
   if (command == "export")
     return strahler::app::runExport(rest);
+  if (command == "export-heightmap")
+    return strahler::app::runExportHeightmap(rest);
   if (command == "serve")
     return strahler::app::runServe(rest);
   if (command == "help" || command == "--help" || command == "-h") {

@@ -1,0 +1,167 @@
+#include "engine_heightmap.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace strahler::app {
+
+using base::ErrorCode;
+using base::makeError;
+
+base::Result<Engine> parseEngine(const std::string& name) {
+  if (name == "unity")
+    return Engine::kUnity;
+  if (name == "unreal")
+    return Engine::kUnreal;
+  if (name == "godot")
+    return Engine::kGodot;
+  if (name == "raw")
+    return Engine::kRaw;
+  return makeError(ErrorCode::kInvalidInput,
+                   "--engine " + name + ": use unity, unreal, godot or raw");
+}
+
+base::Result<EngineFormat> parseEngineFormat(const std::string& name) {
+  if (name == "r16")
+    return EngineFormat::kR16;
+  if (name == "png16")
+    return EngineFormat::kPng16;
+  if (name == "exr" || name == "tif")
+    return makeError(ErrorCode::kInvalidInput,
+                     "--format " + name + ": not written yet; use r16 or png16");
+  return makeError(ErrorCode::kInvalidInput, "--format " + name + ": use r16 or png16");
+}
+
+EngineFormat defaultFormat(Engine engine) noexcept {
+  return engine == Engine::kUnreal ? EngineFormat::kPng16 : EngineFormat::kR16;
+}
+
+base::Status checkFormat(Engine engine, EngineFormat format) {
+  if (engine == Engine::kUnity && format != EngineFormat::kR16)
+    return makeError(ErrorCode::kInvalidInput,
+                     "--engine unity --format png16: Unity imports 16-bit RAW heightmaps only; "
+                     "use --format r16");
+  return base::Ok{};
+}
+
+std::vector<int> validSizes(Engine engine) {
+  std::vector<int> sizes;
+  if (engine == Engine::kUnity) {
+    for (int n = 5; n <= 12; ++n)
+      sizes.push_back((1 << n) + 1);
+  } else if (engine == Engine::kUnreal) {
+    for (int quads : {7, 15, 31, 63, 127, 255})
+      for (int sections = 1; sections <= 2; ++sections)
+        for (int components = 1; components <= 32; ++components)
+          sizes.push_back(quads * sections * components + 1);
+    std::sort(sizes.begin(), sizes.end());
+    sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
+  }
+  return sizes;
+}
+
+namespace {
+
+const char* engineName(Engine engine) noexcept {
+  switch (engine) {
+  case Engine::kUnity:
+    return "unity";
+  case Engine::kUnreal:
+    return "unreal";
+  case Engine::kGodot:
+    return "godot";
+  default:
+    return "raw";
+  }
+}
+
+constexpr int kMinFreeSize = 2;
+constexpr int kMaxFreeSize = 16385;
+
+} // namespace
+
+base::Status checkSize(Engine engine, int size) {
+  const std::vector<int> sizes = validSizes(engine);
+  const std::string prefix =
+      "--size " + std::to_string(size) + ": --engine " + engineName(engine) + " ";
+  if (sizes.empty()) {
+    if (size < kMinFreeSize || size > kMaxFreeSize)
+      return makeError(ErrorCode::kInvalidInput, prefix + "takes 2 … 16385 samples per side");
+    return base::Ok{};
+  }
+  const auto above = std::lower_bound(sizes.begin(), sizes.end(), size);
+  if (above != sizes.end() && *above == size)
+    return base::Ok{};
+  std::string nearest;
+  if (above != sizes.begin())
+    nearest = std::to_string(*(above - 1));
+  if (above != sizes.end())
+    nearest += (nearest.empty() ? "" : " or ") + std::to_string(*above);
+  return makeError(ErrorCode::kInvalidInput,
+                   prefix + "cannot import it; the nearest valid sizes are " + nearest);
+}
+
+bool southRowFirst(Engine engine) noexcept {
+  return engine == Engine::kUnity;
+}
+
+std::uint16_t quantize(double height, double minHeight, double maxHeight) noexcept {
+  if (!(maxHeight > minHeight))
+    return 0;
+  const double t = std::clamp((height - minHeight) / (maxHeight - minHeight), 0.0, 1.0);
+  return static_cast<std::uint16_t>(std::lround(t * 65535.0));
+}
+
+std::string sidecarJson(Engine engine, EngineFormat format, const HeightmapExtent& e) {
+  const double spanX = e.x1 - e.x0;
+  const double spanY = e.y1 - e.y0;
+  const double mppX = spanX / (e.size - 1);
+  const double mppY = spanY / (e.size - 1);
+  const double range = e.maxHeight - e.minHeight;
+  nlohmann::ordered_json j;
+  j["engine"] = engineName(engine);
+  j["format"] = format == EngineFormat::kR16 ? "r16" : "png16";
+  j["byteOrder"] = format == EngineFormat::kR16 ? "little-endian" : "big-endian (PNG)";
+  j["width"] = e.size;
+  j["height"] = e.size;
+  j["row0"] = southRowFirst(engine) ? "south" : "north";
+  j["column0"] = "west";
+  j["bounds"] = {{"west", e.west}, {"south", e.south}, {"east", e.east}, {"north", e.north}};
+  j["localBounds"] = {{"x0", e.x0}, {"y0", e.y0}, {"x1", e.x1}, {"y1", e.y1}};
+  j["metresPerPixel"] = {{"x", mppX}, {"y", mppY}};
+  j["minHeight"] = e.minHeight;
+  j["maxHeight"] = e.maxHeight;
+  j["encoding"] = "height = minHeight + value / 65535 * (maxHeight - minHeight)";
+  switch (engine) {
+  case Engine::kUnity:
+    j["unity"] = {{"depth", "Bit 16"},
+                  {"resolution", e.size},
+                  {"byteOrder", "Windows"},
+                  {"flipVertically", false},
+                  {"terrainSize", {{"x", spanX}, {"y", range}, {"z", spanY}}},
+                  {"terrainPositionY", e.minHeight}};
+    break;
+  case Engine::kUnreal:
+    // 0 … 65535 spans ±256 × Z scale / 100 m: Z scale = range × 100 / 512.
+    j["unreal"] = {{"scaleXcm", mppX * 100},
+                   {"scaleYcm", mppY * 100},
+                   {"scaleZ", range * 100.0 / 512.0},
+                   {"zFormula", "range (m) x 100 x 1/512"},
+                   {"locationZcm", (e.minHeight + e.maxHeight) / 2 * 100}};
+    break;
+  case Engine::kGodot:
+    j["godot"] = {{"heightScale", range},
+                  {"heightOffset", e.minHeight},
+                  {"r16Range", {e.minHeight, e.maxHeight}},
+                  {"r16Size", {e.size, e.size}},
+                  {"vertexSpacing", mppX}};
+    break;
+  default:
+    break;
+  }
+  return j.dump(2) + "\n";
+}
+
+} // namespace strahler::app

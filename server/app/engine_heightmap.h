@@ -1,0 +1,54 @@
+#pragma once
+// The rules of game engines' heightmap imports (sizes, formats, byte order, orientation) and
+// the 16-bit quantisation and sidecar of `strahler export-heightmap`.
+
+#include "strahler/base/result.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace strahler::app {
+
+/// The engine an export is made for.
+enum class Engine { kUnity, kUnreal, kGodot, kRaw };
+
+/// The heightmap file formats export-heightmap writes.
+enum class EngineFormat { kR16, kPng16 };
+
+/// Parses "unity", "unreal", "godot" or "raw".
+base::Result<Engine> parseEngine(const std::string& name);
+/// Parses --format: "r16" or "png16" (kInvalidInput names exr and tif as not written yet).
+base::Result<EngineFormat> parseEngineFormat(const std::string& name);
+/// The format an engine gets without --format (Unity and Godot r16, Unreal png16, raw r16).
+EngineFormat defaultFormat(Engine engine) noexcept;
+/// kInvalidInput when `engine` cannot import `format` (Unity reads RAW only).
+base::Status checkFormat(Engine engine, EngineFormat format);
+
+/// Every valid side length of `engine`, ascending: Unity 2^n + 1 for 33 … 4097; Unreal
+/// quads-per-section (7, 15, 31, 63, 127, 255) × sections per component (1, 2) × components
+/// (1 … 32) + 1; Godot and raw any side in 2 … 16385 (returned empty).
+std::vector<int> validSizes(Engine engine);
+/// kInvalidInput naming the nearest valid sizes below and above when `size` is not valid.
+base::Status checkSize(Engine engine, int size);
+
+/// True when the engine reads row 0 as the southern edge (Unity's RAW, "Flip Vertically" off);
+/// the others read row 0 as the northern edge (north up, x east).
+bool southRowFirst(Engine engine) noexcept;
+
+/// Heights mapped linearly from [minHeight, maxHeight] to 0 … 65535 (rounded; a flat box
+/// gives 0 everywhere).
+std::uint16_t quantize(double height, double minHeight, double maxHeight) noexcept;
+
+/// What a sidecar states about one export.
+struct HeightmapExtent {
+  double west = 0, south = 0, east = 0, north = 0; ///< Degrees (the box's corners' bounds).
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;           ///< Local metres.
+  int size = 0;                                    ///< Samples per side.
+  double minHeight = 0, maxHeight = 0;             ///< m.
+};
+
+/// The sidecar JSON (bounds, metres per pixel, heights, the engine's import numbers).
+std::string sidecarJson(Engine engine, EngineFormat format, const HeightmapExtent& extent);
+
+} // namespace strahler::app

@@ -1,0 +1,452 @@
+#include "heightmap_export_command.h"
+
+#include "atomic_output.h"
+#include "cli_args.h"
+#include "command_support.h"
+#include "engine_heightmap.h"
+#include "export_plan.h"
+#include "terminal_progress.h"
+#include "world_bounds.h"
+
+#include "strahler/construction/world.h"
+#include "strahler/encoding/grey_png.h"
+#include "strahler/geometry/aabb.h"
+#include "strahler/geometry/projection.h"
+#include "strahler/store/world_file.h"
+#include "strahler/tiling/tile_evaluator.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <thread>
+
+namespace strahler::app {
+namespace {
+
+using base::ErrorCode;
+using base::makeError;
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+constexpr const char* kUsage =
+    "usage: strahler export-heightmap WORLD.world --engine unity|unreal|godot|raw -o PATH\n"
+    "                       [--bbox W,S,E,N | --local X0,Y0,X1,Y1] [--size N]\n"
+    "                       [--format r16|png16] [--tiles AxB] [--threads N] [--quiet]\n"
+    "Writes a 16-bit heightmap of the box (default: the world's land) for a game engine,\n"
+    "N × N samples edge to edge, evaluated at the export's own spacing, heights min..max of\n"
+    "the box mapped to 0..65535, and PATH's stem + .json: bounds, metres per pixel, heights\n"
+    "and the engine's import numbers. --bbox in degrees, --local in metres of the world's\n"
+    "local frame (x east, y north). Engines:\n"
+    "  unity   r16 (RAW, little-endian), row 0 south (Flip Vertically off), N = 2^n+1, 33..4097\n"
+    "  unreal  png16 (default) or r16, row 0 north, N from its component rules (505, 1009,\n"
+    "          2017, 4033, 8129, ...); --tiles AxB writes PATH_x{A}_y{B} tiles sharing edges\n"
+    "  godot   r16 (default) or png16 for Terrain3D, row 0 north, N in 2..16385\n"
+    "  raw     r16 (default) or png16, row 0 north, N in 2..16385\n"
+    "Default N: 1025 (unity, godot, raw), 1009 (unreal). --threads: default all cores; the\n"
+    "bytes are the same for any count. Files are written to PATH.tmp.PID and renamed when\n"
+    "complete; on an error or SIGINT/SIGTERM nothing is left. Memory: N² × 4 bytes (68 MB at\n"
+    "4097²); with --tiles one row of tiles at a time (heights evaluated twice).\n";
+
+/// What the command line asked for.
+struct Options {
+  Engine engine = Engine::kRaw;
+  EngineFormat format = EngineFormat::kR16;
+  int size = 0;
+  int tilesX = 1, tilesY = 1;
+  int threads = 1;
+  std::optional<LonLatBox> bbox;
+  std::optional<geometry::Aabb> local;
+  std::string output;
+  bool quiet = false;
+};
+
+base::Result<std::vector<double>> parseNumbers(const std::string& option, const std::string& text,
+                                               std::size_t count) {
+  std::vector<double> values;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string part = text.substr(start, comma - start);
+    char* end = nullptr;
+    const double v = std::strtod(part.c_str(), &end);
+    if (part.empty() || end != part.c_str() + part.size() || !std::isfinite(v))
+      return makeError(ErrorCode::kInvalidInput,
+                       option + " " + text + ": '" + part + "' is not a number");
+    values.push_back(v);
+    start = comma + 1;
+  }
+  if (values.size() != count)
+    return makeError(ErrorCode::kInvalidInput, option + " " + text + ": expected " +
+                                                   std::to_string(count) +
+                                                   " numbers separated by commas");
+  return values;
+}
+
+base::Result<std::pair<int, int>> parseTiles(const std::string& text) {
+  int a = 0, b = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &a, &x, &b, &extra) != 3 || x != 'x' || a < 1 ||
+      b < 1 || a > 64 || b > 64)
+    return makeError(ErrorCode::kInvalidInput,
+                     "--tiles " + text + ": expected AxB with A and B in 1..64, e.g. 2x2");
+  return std::pair<int, int>{a, b};
+}
+
+base::Result<Options> parseOptions(const CliArgs& args) {
+  Options o;
+  if (args.positional().size() != 1)
+    return makeError(ErrorCode::kInvalidInput, "expected exactly one WORLD file");
+  for (const char* required : {"--engine", "-o"})
+    if (!args.get(required))
+      return makeError(ErrorCode::kInvalidInput, std::string("missing ") + required);
+  o.output = *args.get("-o");
+  o.quiet = args.has("--quiet");
+  STRAHLER_ASSIGN_OR_RETURN(o.engine, parseEngine(*args.get("--engine")));
+  o.format = defaultFormat(o.engine);
+  if (const auto format = args.get("--format")) {
+    STRAHLER_ASSIGN_OR_RETURN(o.format, parseEngineFormat(*format));
+  }
+  STRAHLER_RETURN_IF_ERROR(checkFormat(o.engine, o.format));
+  STRAHLER_ASSIGN_OR_RETURN(const auto size, args.getInt("--size", 1, 1 << 20));
+  o.size = static_cast<int>(size.value_or(o.engine == Engine::kUnreal ? 1009 : 1025));
+  STRAHLER_RETURN_IF_ERROR(checkSize(o.engine, o.size));
+  if (args.get("--bbox") && args.get("--local"))
+    return makeError(ErrorCode::kInvalidInput, "give --bbox or --local, not both");
+  if (const auto bbox = args.get("--bbox")) {
+    STRAHLER_ASSIGN_OR_RETURN(o.bbox, parseBbox(*bbox));
+  }
+  if (const auto local = args.get("--local")) {
+    STRAHLER_ASSIGN_OR_RETURN(const auto v, parseNumbers("--local", *local, 4));
+    if (!(v[0] < v[2] && v[1] < v[3]))
+      return makeError(ErrorCode::kInvalidInput,
+                       "--local " + *local + ": expected X0 < X1 and Y0 < Y1");
+    o.local = geometry::Aabb{{v[0], v[1]}, {v[2], v[3]}};
+  }
+  if (const auto tiles = args.get("--tiles")) {
+    if (o.engine != Engine::kUnreal)
+      return makeError(ErrorCode::kInvalidInput,
+                       "--tiles: tiled heightmaps are Unreal's import; use --engine unreal");
+    STRAHLER_ASSIGN_OR_RETURN(const auto t, parseTiles(*tiles));
+    o.tilesX = t.first, o.tilesY = t.second;
+    if ((o.size - 1) % o.tilesX != 0 || (o.size - 1) % o.tilesY != 0)
+      return makeError(ErrorCode::kInvalidInput,
+                       "--tiles " + *tiles + ": " + std::to_string(o.size - 1) +
+                           " quads per side do not split evenly into that many tiles");
+  }
+  const int tileSide = std::max((o.size - 1) / o.tilesX, (o.size - 1) / o.tilesY) + 1;
+  if (o.format == EngineFormat::kPng16 && tileSide > 4096)
+    return makeError(ErrorCode::kInvalidInput,
+                     "--format png16 holds at most 4096 samples per side here; give --tiles "
+                     "(e.g. 2x2) or --format r16");
+  STRAHLER_ASSIGN_OR_RETURN(const auto threads, args.getInt("--threads", 1, 256));
+  o.threads = static_cast<int>(
+      threads.value_or(static_cast<long long>(std::max(1u, std::thread::hardware_concurrency()))));
+  return o;
+}
+
+/// The export's samples: size × size, edge to edge over box, row 0 north.
+struct ExportGrid {
+  geometry::Aabb box;
+  int size = 0;
+  double dx = 0, dy = 0;
+  /// Local point of sample (row, column).
+  geometry::Vec2 at(int row, int column) const noexcept {
+    return {box.min.x + column * dx, box.max.y - row * dy};
+  }
+};
+
+/// Evaluates rows [row0, row1) × columns [col0, col1) on `threads` threads in bands of rows
+/// (each band one SampleGrid at the export's spacing): the same heights for any count.
+/// Progress counts rows in `done`; stops early when a signal is caught.
+std::vector<float> evaluateBlock(const tiling::TileEvaluator& evaluator, const ExportGrid& g,
+                                 int row0, int row1, int col0, int col1, int threads,
+                                 std::atomic<long long>& done) {
+  const int width = col1 - col0;
+  std::vector<float> heights(static_cast<std::size_t>(width) * (row1 - row0));
+  constexpr int kBand = 8;
+  const double spacing = std::min(g.dx, g.dy);
+  std::atomic<int> next{row0};
+  auto work = [&] {
+    for (;;) {
+      const int r = next.fetch_add(kBand);
+      if (r >= row1 || caughtSignal() != 0)
+        return;
+      const int rows = std::min(kBand, row1 - r);
+      tiling::SampleGrid grid;
+      grid.width = width;
+      grid.height = rows;
+      grid.points.reserve(static_cast<std::size_t>(width) * rows);
+      for (int i = 0; i < rows; ++i)
+        for (int c = col0; c < col1; ++c)
+          grid.points.push_back(g.at(r + i, c));
+      for (const geometry::Vec2 p : grid.points)
+        grid.bounds.add(p);
+      grid.rowSpacing.assign(static_cast<std::size_t>(rows), spacing);
+      const std::vector<double> h = evaluator.evaluate(grid);
+      std::transform(h.begin(), h.end(),
+                     heights.begin() + static_cast<std::ptrdiff_t>(r - row0) * width,
+                     [](double v) { return static_cast<float>(v); });
+      done.fetch_add(rows);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t)
+    pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool)
+    t.join();
+  return heights;
+}
+
+/// The bytes of one heightmap file: `heights` (width × height, row 0 north) quantised.
+base::Result<std::string> encodeFile(const Options& o, const std::vector<float>& heights, int width,
+                                     int height, double minHeight, double maxHeight) {
+  std::vector<std::uint16_t> values(heights.size());
+  const bool flip = southRowFirst(o.engine);
+  for (int r = 0; r < height; ++r) {
+    const int out = flip ? height - 1 - r : r;
+    for (int c = 0; c < width; ++c)
+      values[static_cast<std::size_t>(out) * width + c] =
+          quantize(heights[static_cast<std::size_t>(r) * width + c], minHeight, maxHeight);
+  }
+  if (o.format == EngineFormat::kPng16)
+    return encoding::encodeGrey16Png(values, width, height);
+  std::string bytes(values.size() * 2, '\0');
+  for (std::size_t i = 0; i < values.size(); ++i) { // little-endian whatever the host
+    bytes[2 * i] = static_cast<char>(values[i] & 0xff);
+    bytes[2 * i + 1] = static_cast<char>(values[i] >> 8);
+  }
+  return bytes;
+}
+
+base::Status writeBytes(TemporaryOutput& file, const std::string& bytes, const std::string& name) {
+  std::ofstream out(file.path(), std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out)
+    return makeError(ErrorCode::kIoError, "cannot write '" + name + "'");
+  return base::Ok{};
+}
+
+/// PATH without its extension, and the extension.
+std::pair<std::string, std::string> splitExtension(const std::string& path) {
+  const fs::path p(path);
+  const std::string ext = p.extension().string();
+  return {path.substr(0, path.size() - ext.size()), ext};
+}
+
+/// The file of tile (x, y): PATH itself without --tiles, else STEM_x{x}_y{y}.EXT.
+std::string tilePath(const Options& o, int x, int y) {
+  if (o.tilesX == 1 && o.tilesY == 1)
+    return o.output;
+  const auto [stem, ext] = splitExtension(o.output);
+  return stem + "_x" + std::to_string(x) + "_y" + std::to_string(y) + ext;
+}
+
+/// Shows progress with an ETA at most every 200 ms until `finished`.
+void watchProgress(TerminalProgress& progress, const std::atomic<long long>& done, long long total,
+                   const std::atomic<bool>& finished) {
+  const auto start = Clock::now();
+  while (!finished.load()) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    const double fraction = static_cast<double>(done.load()) / static_cast<double>(total);
+    if (fraction <= 0)
+      continue;
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    progress.update("export-heightmap", std::min(fraction, 1.0),
+                    std::to_string(done.load()) + "/" + std::to_string(total) + " rows, ETA " +
+                        formatSeconds(elapsed / fraction * (1.0 - fraction)));
+  }
+}
+
+/// Evaluates and writes every file (temporaries in `outputs`, committed by the caller).
+base::Status writeFiles(const Options& o, const tiling::TileEvaluator& evaluator,
+                        const ExportGrid& g, HeightmapExtent& extent,
+                        std::vector<std::unique_ptr<TemporaryOutput>>& outputs,
+                        std::atomic<long long>& done) {
+  const bool tiled = o.tilesX > 1 || o.tilesY > 1;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  std::vector<float> whole;
+  // Heights' range first: the whole grid in memory, or (tiled) streamed a tile row at a time.
+  const int band = tiled ? (g.size - 1) / o.tilesY + 1 : g.size;
+  for (int r0 = 0; r0 < g.size - 1 || r0 == 0; r0 += band - 1) {
+    const int r1 = std::min(g.size, r0 + band);
+    std::vector<float> h = evaluateBlock(evaluator, g, r0, r1, 0, g.size, o.threads, done);
+    if (caughtSignal() != 0)
+      return makeError(ErrorCode::kInternal, "interrupted");
+    const auto [mn, mx] = std::minmax_element(h.begin(), h.end());
+    lo = std::min(lo, static_cast<double>(*mn));
+    hi = std::max(hi, static_cast<double>(*mx));
+    if (!tiled)
+      whole = std::move(h);
+    if (r1 == g.size)
+      break;
+  }
+  extent.minHeight = lo, extent.maxHeight = hi;
+  if (!tiled) {
+    STRAHLER_ASSIGN_OR_RETURN(const std::string bytes,
+                              encodeFile(o, whole, g.size, g.size, lo, hi));
+    outputs.push_back(std::make_unique<TemporaryOutput>(o.output));
+    return writeBytes(*outputs.back(), bytes, o.output);
+  }
+  const int sideX = (g.size - 1) / o.tilesX, sideY = (g.size - 1) / o.tilesY;
+  for (int ty = 0; ty < o.tilesY; ++ty) {
+    const std::vector<float> rows =
+        evaluateBlock(evaluator, g, ty * sideY, ty * sideY + sideY + 1, 0, g.size, o.threads, done);
+    if (caughtSignal() != 0)
+      return makeError(ErrorCode::kInternal, "interrupted");
+    for (int tx = 0; tx < o.tilesX; ++tx) {
+      std::vector<float> tile;
+      tile.reserve(static_cast<std::size_t>(sideX + 1) * (sideY + 1));
+      for (int r = 0; r <= sideY; ++r)
+        for (int c = tx * sideX; c <= tx * sideX + sideX; ++c)
+          tile.push_back(rows[static_cast<std::size_t>(r) * g.size + c]);
+      STRAHLER_ASSIGN_OR_RETURN(const std::string bytes,
+                                encodeFile(o, tile, sideX + 1, sideY + 1, lo, hi));
+      const std::string name = tilePath(o, tx, ty);
+      outputs.push_back(std::make_unique<TemporaryOutput>(name));
+      STRAHLER_RETURN_IF_ERROR(writeBytes(*outputs.back(), bytes, name));
+    }
+  }
+  return base::Ok{};
+}
+
+/// The local box to export, or an error when it misses the world's land.
+base::Result<geometry::Aabb> exportBox(const Options& o, const construction::WorldData& world,
+                                       const geometry::LocalProjection& projection) {
+  geometry::Aabb land;
+  for (const geometry::Polygon& p : world.land)
+    for (geometry::Vec2 v : p.outer)
+      land.add(v);
+  geometry::Aabb box = land;
+  std::string asked;
+  if (o.local) {
+    box = *o.local;
+    asked = "--local";
+  } else if (o.bbox) {
+    box = geometry::Aabb{};
+    const LonLatBox& b = *o.bbox;
+    for (int i = 0; i <= 8; ++i) { // the edges' curves in the local frame
+      const double t = i / 8.0;
+      box.add(projection.forward({b.west + t * (b.east - b.west), b.south}));
+      box.add(projection.forward({b.west + t * (b.east - b.west), b.north}));
+      box.add(projection.forward({b.west, b.south + t * (b.north - b.south)}));
+      box.add(projection.forward({b.east, b.south + t * (b.north - b.south)}));
+    }
+    asked = "--bbox " + describe(b);
+  }
+  if (box.max.x <= land.min.x || box.min.x >= land.max.x || box.max.y <= land.min.y ||
+      box.min.y >= land.max.y) {
+    char text[160];
+    std::snprintf(
+        text, sizeof text, " does not overlap the world's land (local %.0f,%.0f,%.0f,%.0f m; %s)",
+        land.min.x, land.min.y, land.max.x, land.max.y, describe(worldBounds(world)).c_str());
+    return makeError(ErrorCode::kInvalidInput, asked + text);
+  }
+  return box;
+}
+
+int exportHeightmap(const Options& o, construction::WorldData data) {
+  const geometry::LocalProjection projection(data.projectionCenter.x, data.projectionCenter.y);
+  auto box = exportBox(o, data, projection);
+  if (!box)
+    return usageError(box.error(), kUsage);
+  ExportGrid g{box.value(), o.size, box.value().size().x / (o.size - 1),
+               box.value().size().y / (o.size - 1)};
+  HeightmapExtent extent;
+  extent.x0 = g.box.min.x, extent.y0 = g.box.min.y, extent.x1 = g.box.max.x,
+  extent.y1 = g.box.max.y, extent.size = o.size;
+  geometry::Aabb degrees;
+  for (const geometry::Vec2 corner :
+       {g.box.min, g.box.max, geometry::Vec2{g.box.min.x, g.box.max.y},
+        geometry::Vec2{g.box.max.x, g.box.min.y}})
+    degrees.add(projection.inverse(corner));
+  extent.west = degrees.min.x, extent.south = degrees.min.y, extent.east = degrees.max.x,
+  extent.north = degrees.max.y;
+
+  const auto start = Clock::now();
+  const construction::World world(std::move(data));
+  const tiling::TileEvaluator evaluator(world);
+  clearCaughtSignal();
+  const SignalCatcher catcher;
+  std::vector<std::unique_ptr<TemporaryOutput>> outputs;
+  std::atomic<long long> done{0};
+  const bool tiled = o.tilesX > 1 || o.tilesY > 1;
+  const long long total = tiled ? 2LL * o.size + o.tilesY : o.size;
+  base::Status status = base::Ok{};
+  {
+    TerminalProgress progress(o.quiet);
+    std::atomic<bool> finished{false};
+    std::thread watcher;
+    if (progress.enabled())
+      watcher = std::thread([&] { watchProgress(progress, done, total, finished); });
+    try {
+      status = writeFiles(o, evaluator, g, extent, outputs, done);
+    } catch (const std::exception& e) { // never leave without removing the temporary files
+      status = makeError(ErrorCode::kInternal, std::string("export failed: ") + e.what());
+    }
+    finished.store(true);
+    if (watcher.joinable())
+      watcher.join();
+  }
+  const std::string sidecar = splitExtension(o.output).first + ".json";
+  TemporaryOutput sidecarFile(sidecar);
+  if (status)
+    status = writeBytes(sidecarFile, sidecarJson(o.engine, o.format, extent), sidecar);
+  if (const int signal = caughtSignal(); signal != 0) {
+    std::fprintf(stderr, "strahler: interrupted by %s: no heightmap written\n",
+                 signal == SIGINT ? "SIGINT" : "SIGTERM");
+    for (auto& file : outputs)
+      file->discard();
+    sidecarFile.discard();
+    return dieBy(signal);
+  }
+  for (auto& file : outputs)
+    if (status)
+      status = file->commit();
+  if (status)
+    status = sidecarFile.commit();
+  if (!status)
+    return fail(status.error());
+  if (!o.quiet)
+    std::fprintf(stderr,
+                 "exported a %d × %d heightmap (%zu file%s, %s) to %s in %.1f s (%d threads); "
+                 "heights %.2f … %.2f m; sidecar %s\n",
+                 o.size, o.size, outputs.size(), outputs.size() == 1 ? "" : "s",
+                 o.format == EngineFormat::kR16 ? "r16" : "png16", o.output.c_str(),
+                 std::chrono::duration<double>(Clock::now() - start).count(), o.threads,
+                 extent.minHeight, extent.maxHeight, sidecar.c_str());
+  return 0;
+}
+
+} // namespace
+
+int runExportHeightmap(const std::vector<std::string>& raw) {
+  auto parsed = CliArgs::parse(
+      "export-heightmap", raw,
+      {"--engine", "--format", "--size", "--bbox", "--local", "--tiles", "--threads", "-o"},
+      {"--help", "-h", "--quiet"});
+  if (!parsed)
+    return usageError(parsed.error(), kUsage);
+  const CliArgs& args = parsed.value();
+  if (args.has("--help") || args.has("-h"))
+    return printUsage(kUsage);
+  auto options = parseOptions(args);
+  if (!options)
+    return usageError(options.error(), kUsage);
+  if (auto writable = checkWritable(options.value().output); !writable)
+    return fail(writable.error());
+  auto world = store::readWorldFile(args.positional()[0]);
+  if (!world)
+    return fail(world.error());
+  return exportHeightmap(options.value(), std::move(world).value());
+}
+
+} // namespace strahler::app
