@@ -1,0 +1,287 @@
+// `strahler export-heightmap` run as a user runs it: each engine's size, byte order and
+// orientation read back independently of the writer and checked against World::height,
+// Unreal's tiles sharing their edges, the same bytes for any thread count, and bad input
+// refused with exit 2 and nothing written.
+#include "engine_heightmap.h"
+#include "program_run.h"
+
+#include "strahler/construction/world.h"
+#include "strahler/store/world_file.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <spng.h>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using strahler::test_support::ProcessRun;
+using strahler::test_support::readWholeFile;
+
+fs::path scratchDir() {
+  return strahler::test_support::processScratchDir(
+      fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch", "export-heightmap");
+}
+
+ProcessRun strahler(const std::string& args) {
+  return strahler::test_support::runProgram(STRAHLER_EXECUTABLE, args, scratchDir());
+}
+
+/// The default island as a world file, generated once per test process.
+const fs::path& islandWorld() {
+  static const fs::path path = [] {
+    const fs::path p = scratchDir() / "island.world";
+    const ProcessRun run = strahler("generate --quiet -o " + p.string());
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    return p;
+  }();
+  return path;
+}
+
+/// An empty folder of its own for one test's outputs.
+fs::path outputDir(const std::string& name) {
+  const fs::path dir = scratchDir() / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+/// 16-bit samples of an r16 file read as little-endian bytes, whatever the host's order.
+std::vector<std::uint16_t> readR16(const fs::path& file) {
+  const std::string bytes = readWholeFile(file);
+  std::vector<std::uint16_t> values(bytes.size() / 2);
+  for (std::size_t i = 0; i < values.size(); ++i)
+    values[i] = static_cast<std::uint16_t>(static_cast<unsigned char>(bytes[2 * i]) |
+                                           static_cast<unsigned char>(bytes[2 * i + 1]) << 8);
+  return values;
+}
+
+/// A 16-bit grey PNG decoded by libspng into host-order samples; sets width and height.
+std::vector<std::uint16_t> readPng16(const fs::path& file, int& width, int& height) {
+  const std::string bytes = readWholeFile(file);
+  spng_ctx* ctx = spng_ctx_new(0);
+  spng_set_png_buffer(ctx, bytes.data(), bytes.size());
+  spng_ihdr ihdr{};
+  EXPECT_EQ(spng_get_ihdr(ctx, &ihdr), 0);
+  EXPECT_EQ(ihdr.bit_depth, 16);
+  EXPECT_EQ(ihdr.color_type, SPNG_COLOR_TYPE_GRAYSCALE);
+  width = static_cast<int>(ihdr.width), height = static_cast<int>(ihdr.height);
+  std::vector<std::uint16_t> values(static_cast<std::size_t>(width) * height);
+  // SPNG_FMT_RAW keeps the file's big-endian order (SPNG_FMT_PNG is host-endian): swap here.
+  std::vector<unsigned char> raw(values.size() * 2);
+  EXPECT_EQ(spng_decode_image(ctx, raw.data(), raw.size(), SPNG_FMT_RAW, 0), 0);
+  spng_ctx_free(ctx);
+  for (std::size_t i = 0; i < values.size(); ++i)
+    values[i] = static_cast<std::uint16_t>(raw[2 * i] << 8 | raw[2 * i + 1]);
+  return values;
+}
+
+nlohmann::json readSidecar(const fs::path& file) {
+  return nlohmann::json::parse(readWholeFile(file));
+}
+
+/// Checks that sample (row, column) of the file, read with the sidecar's row order, holds
+/// World::height at that point (at the export's spacing) within one quantisation step.
+void expectSampleMatchesWorld(const strahler::construction::World& world,
+                              const nlohmann::json& side, const std::vector<std::uint16_t>& v,
+                              int row, int column) {
+  const int n = side["width"];
+  const double x0 = side["localBounds"]["x0"], x1 = side["localBounds"]["x1"];
+  const double y0 = side["localBounds"]["y0"], y1 = side["localBounds"]["y1"];
+  const double lo = side["minHeight"], hi = side["maxHeight"];
+  const double dx = (x1 - x0) / (n - 1), dy = (y1 - y0) / (n - 1);
+  const bool southFirst = side["row0"] == "south";
+  // row counts from the north here; the file's row from its own first row.
+  const int fileRow = southFirst ? n - 1 - row : row;
+  const double stored =
+      lo + v[static_cast<std::size_t>(fileRow) * n + column] / 65535.0 * (hi - lo);
+  const double expected = world.height({x0 + column * dx, y1 - row * dy}, std::min(dx, dy));
+  EXPECT_NEAR(stored, expected, (hi - lo) / 65535.0 + 0.01)
+      << "row " << row << " (from the north), column " << column;
+}
+
+/// The row (from the north) and column of the highest sample.
+std::pair<int, int> highest(const nlohmann::json& side, const std::vector<std::uint16_t>& v) {
+  const int n = side["width"];
+  const auto top = static_cast<int>(std::max_element(v.begin(), v.end()) - v.begin());
+  const int fileRow = top / n;
+  return {side["row0"] == "south" ? n - 1 - fileRow : fileRow, top % n};
+}
+
+const strahler::construction::World& loadedWorld() {
+  static const strahler::construction::World world(
+      strahler::store::readWorldFile(islandWorld().string()).value());
+  return world;
+}
+
+void expectOrientation(const nlohmann::json& side, const std::vector<std::uint16_t>& v) {
+  const int n = side["width"];
+  const auto [row, column] = highest(side, v);
+  expectSampleMatchesWorld(loadedWorld(), side, v, row, column);
+  for (const int r : {0, n / 3, n - 1})
+    for (const int c : {0, n / 2, n - 1})
+      expectSampleMatchesWorld(loadedWorld(), side, v, r, c);
+}
+
+TEST(ExportHeightmap, UnityWritesLittleEndianRawSouthRowFirst) {
+  const fs::path dir = outputDir("unity");
+  const ProcessRun run = strahler("export-heightmap " + islandWorld().string() +
+                                  " --engine unity --size 129 -o " + (dir / "h.raw").string());
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_EQ(fs::file_size(dir / "h.raw"), 129u * 129u * 2u);
+  const nlohmann::json side = readSidecar(dir / "h.json");
+  EXPECT_EQ(side["row0"], "south");
+  EXPECT_EQ(side["unity"]["resolution"], 129);
+  EXPECT_EQ(side["unity"]["byteOrder"], "Windows");
+  const std::vector<std::uint16_t> v = readR16(dir / "h.raw");
+  EXPECT_EQ(*std::max_element(v.begin(), v.end()), 65535);
+  EXPECT_EQ(*std::min_element(v.begin(), v.end()), 0);
+  expectOrientation(side, v);
+  const double range = side["maxHeight"].get<double>() - side["minHeight"].get<double>();
+  EXPECT_DOUBLE_EQ(side["unity"]["terrainSize"]["y"].get<double>(), range);
+}
+
+TEST(ExportHeightmap, UnrealWritesPng16NorthRowFirstWithItsZScale) {
+  const fs::path dir = outputDir("unreal");
+  const ProcessRun run = strahler("export-heightmap " + islandWorld().string() +
+                                  " --engine unreal --size 505 -o " + (dir / "h.png").string());
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  int width = 0, height = 0;
+  const std::vector<std::uint16_t> v = readPng16(dir / "h.png", width, height);
+  EXPECT_EQ(width, 505);
+  EXPECT_EQ(height, 505);
+  const nlohmann::json side = readSidecar(dir / "h.json");
+  EXPECT_EQ(side["row0"], "north");
+  expectOrientation(side, v);
+  const double range = side["maxHeight"].get<double>() - side["minHeight"].get<double>();
+  EXPECT_NEAR(side["unreal"]["scaleZ"].get<double>(), range * 100 * 0.001953125, 1e-9);
+  EXPECT_NEAR(side["unreal"]["scaleXcm"].get<double>(),
+              side["metresPerPixel"]["x"].get<double>() * 100, 1e-9);
+}
+
+TEST(ExportHeightmap, GodotAndRawWriteR16NorthRowFirstInABox) {
+  const fs::path dir = outputDir("godot");
+  for (const char* engine : {"godot", "raw"}) {
+    const fs::path file = dir / (std::string(engine) + ".r16");
+    const ProcessRun run =
+        strahler("export-heightmap " + islandWorld().string() + " --engine " + engine +
+                 " --size 100 --local -20000,-10000,10000,8000 -o " + file.string());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(fs::file_size(file), 100u * 100u * 2u);
+    const nlohmann::json side = readSidecar(dir / (std::string(engine) + ".json"));
+    EXPECT_EQ(side["localBounds"]["x0"], -20000.0);
+    EXPECT_EQ(side["localBounds"]["y1"], 8000.0);
+    expectOrientation(side, readR16(file));
+  }
+  EXPECT_EQ(readSidecar(dir / "godot.json")["godot"]["r16Size"][0], 100);
+}
+
+TEST(ExportHeightmap, UnrealTilesShareTheirEdgesAndMatchTheWholeExport) {
+  const fs::path dir = outputDir("tiles");
+  const std::string common = "export-heightmap " + islandWorld().string() +
+                             " --engine unreal --format r16 --size 505 --quiet -o ";
+  ASSERT_EQ(strahler(common + (dir / "whole.r16").string()).exitCode, 0);
+  const ProcessRun run = strahler(common + (dir / "t.r16").string() + " --tiles 2x2");
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const std::vector<std::uint16_t> whole = readR16(dir / "whole.r16");
+  for (int ty = 0; ty < 2; ++ty)
+    for (int tx = 0; tx < 2; ++tx) {
+      const fs::path file = dir / ("t_x" + std::to_string(tx) + "_y" + std::to_string(ty) + ".r16");
+      ASSERT_TRUE(fs::exists(file)) << file;
+      const std::vector<std::uint16_t> tile = readR16(file);
+      ASSERT_EQ(tile.size(), 253u * 253u);
+      for (int r = 0; r < 253; ++r)
+        for (int c = 0; c < 253; ++c)
+          ASSERT_EQ(tile[static_cast<std::size_t>(r) * 253 + c],
+                    whole[static_cast<std::size_t>(ty * 252 + r) * 505 + tx * 252 + c])
+              << file << " row " << r << " column " << c;
+    }
+  // Neighbours share the samples of their common edge.
+  const auto left = readR16(dir / "t_x0_y0.r16"), right = readR16(dir / "t_x1_y0.r16");
+  for (int r = 0; r < 253; ++r)
+    EXPECT_EQ(left[static_cast<std::size_t>(r) * 253 + 252],
+              right[static_cast<std::size_t>(r) * 253]);
+  EXPECT_EQ(readSidecar(dir / "t.json")["width"], 505);
+}
+
+TEST(ExportHeightmap, WritesTheSameBytesForOneAndTwoThreads) {
+  const fs::path dir = outputDir("threads");
+  std::string bytes[2];
+  for (int threads = 1; threads <= 2; ++threads) {
+    const fs::path file = dir / ("h" + std::to_string(threads) + ".png");
+    const ProcessRun run = strahler("export-heightmap " + islandWorld().string() +
+                                    " --engine unreal --size 1009 --quiet --threads " +
+                                    std::to_string(threads) + " -o " + file.string());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    bytes[threads - 1] = readWholeFile(file);
+  }
+  EXPECT_EQ(bytes[0], bytes[1]);
+}
+
+TEST(ExportHeightmap, RefusesBadInputWithExit2AndWritesNothing) {
+  const fs::path dir = outputDir("refused");
+  const std::string world = islandWorld().string();
+  const std::string out = " -o " + (dir / "h.raw").string();
+  const struct {
+    std::string args;
+    std::string message;
+  } cases[] = {
+      {"--engine unity --size 1000", "the nearest valid sizes are 513 or 1025"},
+      {"--engine unity --size 5000", "the nearest valid sizes are 4097"},
+      {"--engine unreal --size 1000", "the nearest valid sizes are 993 or 1009"},
+      {"--engine unity --format png16", "Unity imports 16-bit RAW heightmaps only"},
+      {"--engine unity --format exr", "--format exr: not written yet"},
+      {"--engine cryengine", "--engine cryengine: use unity, unreal, godot or raw"},
+      {"--engine unity --bbox 10,50,11", "--bbox"},
+      {"--engine unity --bbox 100,10,101,11", "does not overlap the world's land"},
+      {"--engine raw --local 1e7,1e7,2e7,2e7", "does not overlap the world's land"},
+      {"--engine raw --local 5,0,1,1", "expected X0 < X1 and Y0 < Y1"},
+      {"--engine unity --tiles 2x2", "tiled heightmaps are Unreal's import"},
+      {"--engine unreal --size 505 --tiles 5x5", "do not split evenly"},
+      {"--engine unreal --format png16 --size 8129", "give --tiles"},
+  };
+  for (const auto& c : cases) {
+    const ProcessRun run = strahler("export-heightmap " + world + " " + c.args + out);
+    EXPECT_EQ(run.exitCode, 2) << c.args << ": " << run.err;
+    EXPECT_NE(run.err.find(c.message), std::string::npos) << c.args << ": " << run.err;
+  }
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(EngineHeightmap, ValidSizesFollowEachEnginesRule) {
+  using strahler::app::Engine;
+  EXPECT_EQ(strahler::app::validSizes(Engine::kUnity),
+            (std::vector<int>{33, 65, 129, 257, 513, 1025, 2049, 4097}));
+  const std::vector<int> unreal = strahler::app::validSizes(Engine::kUnreal);
+  for (const int recommended : {505, 1009, 2017, 4033, 8129}) // Epic's recommended sizes
+    EXPECT_TRUE(std::binary_search(unreal.begin(), unreal.end(), recommended)) << recommended;
+  for (const int size : unreal) { // quads per section × sections × components + 1
+    bool derived = false;
+    for (const int quads : {7, 15, 31, 63, 127, 255})
+      for (int sections = 1; sections <= 2; ++sections)
+        derived = derived ||
+                  ((size - 1) % (quads * sections) == 0 && (size - 1) / (quads * sections) <= 32);
+    EXPECT_TRUE(derived) << size;
+  }
+  EXPECT_EQ(unreal.front(), 8);
+  EXPECT_EQ(unreal.back(), 255 * 2 * 32 + 1);
+  EXPECT_TRUE(strahler::app::validSizes(Engine::kGodot).empty());
+  EXPECT_TRUE(strahler::app::checkSize(Engine::kGodot, 100));
+  EXPECT_FALSE(strahler::app::checkSize(Engine::kRaw, 1));
+}
+
+TEST(EngineHeightmap, QuantizeMapsTheRangeOntoSixteenBits) {
+  EXPECT_EQ(strahler::app::quantize(-10, -10, 90), 0);
+  EXPECT_EQ(strahler::app::quantize(90, -10, 90), 65535);
+  EXPECT_EQ(strahler::app::quantize(40, -10, 90), 32768);
+  EXPECT_EQ(strahler::app::quantize(5, 5, 5), 0); // a flat box
+}
+
+} // namespace
