@@ -4,6 +4,7 @@
 // refused with exit 2 and nothing written.
 #include "engine_heightmap.h"
 #include "program_run.h"
+#include "serve_process.h"
 
 #include "strahler/construction/world.h"
 #include "strahler/store/world_file.h"
@@ -12,11 +13,15 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <filesystem>
 #include <spng.h>
 #include <string>
+#include <sys/wait.h>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -24,6 +29,7 @@ namespace {
 namespace fs = std::filesystem;
 using strahler::test_support::ProcessRun;
 using strahler::test_support::readWholeFile;
+using namespace std::chrono_literals;
 
 fs::path scratchDir() {
   return strahler::test_support::processScratchDir(
@@ -253,6 +259,41 @@ TEST(ExportHeightmap, RefusesBadInputWithExit2AndWritesNothing) {
     EXPECT_NE(run.err.find(c.message), std::string::npos) << c.args << ": " << run.err;
   }
   EXPECT_TRUE(fs::is_empty(dir));
+}
+
+/// Starts a tiled export, sends `signal` (after `wait`, or once the first tile's temporary file
+/// exists when `wait` is zero) and checks that the process dies by it leaving no file behind.
+void interruptExport(int signal, std::chrono::milliseconds wait) {
+  const fs::path dir = outputDir("interrupt-" + std::to_string(signal));
+  const fs::path out = dir / "big.png";
+  strahler::test_support::ServeProcess run(
+      {STRAHLER_EXECUTABLE, "export-heightmap", islandWorld().string(), "--engine", "unreal",
+       "--size", "4065", "--tiles", "4x4", "--threads", "1", "--quiet", "-o", out.string()},
+      "");
+  ASSERT_GT(run.pid(), 0);
+  if (wait.count() > 0) {
+    std::this_thread::sleep_for(wait);
+  } else {
+    const fs::path temporary =
+        (dir / "big_x0_y0.png").string() + ".tmp." + std::to_string(run.pid());
+    const auto deadline = std::chrono::steady_clock::now() + 120s;
+    while (!fs::exists(temporary) && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(5ms);
+    ASSERT_TRUE(fs::exists(temporary)) << "no " << temporary << " within 120 s";
+  }
+  ::kill(run.pid(), signal);
+  const auto status = run.waitUntil(std::chrono::steady_clock::now() + 30s);
+  ASSERT_TRUE(status) << "export still running 30 s after the signal";
+  EXPECT_TRUE(WIFSIGNALED(*status) && WTERMSIG(*status) == signal) << "wait status " << *status;
+  EXPECT_TRUE(fs::is_empty(dir)) << "left behind after the signal";
+}
+
+TEST(ExportHeightmap, SigtermWhileEvaluatingLeavesNothing) {
+  interruptExport(SIGTERM, 500ms);
+}
+
+TEST(ExportHeightmap, SigintWhileWritingTilesLeavesNothing) {
+  interruptExport(SIGINT, 0ms);
 }
 
 TEST(EngineHeightmap, ValidSizesFollowEachEnginesRule) {
