@@ -20,7 +20,7 @@ endfunction()
 
 help_of(main)
 string(REGEX MATCH "commands:\n(.*)" listing "${main}")
-string(REGEX MATCHALL "\n  [a-z]+ " names "\n${CMAKE_MATCH_1}")
+string(REGEX MATCHALL "\n  [a-z][a-z-]* " names "\n${CMAKE_MATCH_1}")
 string(TIMESTAMP today "%Y-%m-%d" UTC) # SOURCE_DATE_EPOCH when set, for reproducible builds
 roff_literal(overview "${main}")
 set(page ".TH STRAHLER 1 \"${today}\" \"strahler ${VERSION}\" \"User Commands\"

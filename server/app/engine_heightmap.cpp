@@ -134,6 +134,12 @@ std::string sidecarJson(Engine engine, EngineFormat format, const HeightmapExten
   j["minHeight"] = e.minHeight;
   j["maxHeight"] = e.maxHeight;
   j["encoding"] = "height = minHeight + value / 65535 * (maxHeight - minHeight)";
+  if (e.tilesX > 1 || e.tilesY > 1)
+    j["tiles"] = {{"x", e.tilesX},
+                  {"y", e.tilesY},
+                  {"width", (e.size - 1) / e.tilesX + 1},
+                  {"height", (e.size - 1) / e.tilesY + 1},
+                  {"names", "STEM_x{column}_y{row}, row 0 north; neighbours share edge samples"}};
   switch (engine) {
   case Engine::kUnity:
     j["unity"] = {{"depth", "Bit 16"},

@@ -46,6 +46,7 @@ struct HeightmapExtent {
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;           ///< Local metres.
   int size = 0;                                    ///< Samples per side.
   double minHeight = 0, maxHeight = 0;             ///< m.
+  int tilesX = 1, tilesY = 1;                      ///< Unreal's --tiles (1 × 1: one file).
 };
 
 /// The sidecar JSON (bounds, metres per pixel, heights, the engine's import numbers).

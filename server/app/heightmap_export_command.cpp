@@ -363,6 +363,7 @@ int exportHeightmap(const Options& o, construction::WorldData data) {
   HeightmapExtent extent;
   extent.x0 = g.box.min.x, extent.y0 = g.box.min.y, extent.x1 = g.box.max.x,
   extent.y1 = g.box.max.y, extent.size = o.size;
+  extent.tilesX = o.tilesX, extent.tilesY = o.tilesY;
   geometry::Aabb degrees;
   for (const geometry::Vec2 corner :
        {g.box.min, g.box.max, geometry::Vec2{g.box.min.x, g.box.max.y},

@@ -214,7 +214,10 @@ TEST(ExportHeightmap, UnrealTilesShareTheirEdgesAndMatchTheWholeExport) {
   for (int r = 0; r < 253; ++r)
     EXPECT_EQ(left[static_cast<std::size_t>(r) * 253 + 252],
               right[static_cast<std::size_t>(r) * 253]);
-  EXPECT_EQ(readSidecar(dir / "t.json")["width"], 505);
+  const nlohmann::json side = readSidecar(dir / "t.json");
+  EXPECT_EQ(side["width"], 505);
+  EXPECT_EQ(side["tiles"]["x"], 2);
+  EXPECT_EQ(side["tiles"]["width"], 253);
 }
 
 TEST(ExportHeightmap, WritesTheSameBytesForOneAndTwoThreads) {
