@@ -380,7 +380,7 @@ int exportHeightmap(const Options& o, construction::WorldData data) {
   std::vector<std::unique_ptr<TemporaryOutput>> outputs;
   std::atomic<long long> done{0};
   const bool tiled = o.tilesX > 1 || o.tilesY > 1;
-  const long long total = tiled ? 2LL * o.size + o.tilesY : o.size;
+  const long long total = tiled ? 2LL * (o.size + o.tilesY - 1) : o.size; // rows evaluated
   base::Status status = base::Ok{};
   {
     TerminalProgress progress(o.quiet);

@@ -234,7 +234,7 @@ TEST(ExportHeightmap, WritesTheSameBytesForOneAndTwoThreads) {
   EXPECT_EQ(bytes[0], bytes[1]);
 }
 
-TEST(ExportHeightmap, RefusesBadInputWithExit2AndWritesNothing) {
+TEST(ExportHeightmap, RefusesBadInputWithAPreciseMessageAndWritesNothing) {
   const fs::path dir = outputDir("refused");
   const std::string world = islandWorld().string();
   const std::string out = " -o " + (dir / "h.raw").string();
@@ -261,6 +261,12 @@ TEST(ExportHeightmap, RefusesBadInputWithExit2AndWritesNothing) {
     EXPECT_EQ(run.exitCode, 2) << c.args << ": " << run.err;
     EXPECT_NE(run.err.find(c.message), std::string::npos) << c.args << ": " << run.err;
   }
+  EXPECT_TRUE(fs::is_empty(dir));
+  // An output folder that does not exist is a failure (exit 1), found before any work.
+  const ProcessRun unwritable = strahler("export-heightmap " + world + " --engine unity -o " +
+                                         (dir / "missing" / "h.raw").string());
+  EXPECT_EQ(unwritable.exitCode, 1) << unwritable.err;
+  EXPECT_NE(unwritable.err.find("no folder"), std::string::npos) << unwritable.err;
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
