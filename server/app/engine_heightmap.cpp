@@ -28,10 +28,11 @@ base::Result<EngineFormat> parseEngineFormat(const std::string& name) {
     return EngineFormat::kR16;
   if (name == "png16")
     return EngineFormat::kPng16;
-  if (name == "exr" || name == "tif")
-    return makeError(ErrorCode::kInvalidInput,
-                     "--format " + name + ": not written yet; use r16 or png16");
-  return makeError(ErrorCode::kInvalidInput, "--format " + name + ": use r16 or png16");
+  if (name == "exr")
+    return EngineFormat::kExr;
+  if (name == "tif")
+    return EngineFormat::kTiff;
+  return makeError(ErrorCode::kInvalidInput, "--format " + name + ": use r16, png16, exr or tif");
 }
 
 EngineFormat defaultFormat(Engine engine) noexcept {
@@ -39,10 +40,17 @@ EngineFormat defaultFormat(Engine engine) noexcept {
 }
 
 base::Status checkFormat(Engine engine, EngineFormat format) {
+  const std::string asked =
+      std::string("--engine ") + engineName(engine) + " --format " + formatName(format) + ": ";
   if (engine == Engine::kUnity && format != EngineFormat::kR16)
     return makeError(ErrorCode::kInvalidInput,
-                     "--engine unity --format png16: Unity imports 16-bit RAW heightmaps only; "
-                     "use --format r16");
+                     asked + "Unity imports 16-bit RAW heightmaps only; use --format r16");
+  if (engine == Engine::kUnreal && isFloat(format))
+    return makeError(ErrorCode::kInvalidInput,
+                     asked + "Unreal imports 16-bit PNG or RAW heightmaps; use png16 or r16");
+  if (engine == Engine::kGodot && format == EngineFormat::kTiff)
+    return makeError(ErrorCode::kInvalidInput,
+                     asked + "Godot cannot load TIFF; use exr, r16 or png16");
   return base::Ok{};
 }
 
@@ -64,6 +72,11 @@ std::vector<int> validSizes(Engine engine) {
 
 namespace {
 
+constexpr int kMinFreeSize = 2;
+constexpr int kMaxFreeSize = 16385;
+
+} // namespace
+
 const char* engineName(Engine engine) noexcept {
   switch (engine) {
   case Engine::kUnity:
@@ -77,10 +90,22 @@ const char* engineName(Engine engine) noexcept {
   }
 }
 
-constexpr int kMinFreeSize = 2;
-constexpr int kMaxFreeSize = 16385;
+bool isFloat(EngineFormat format) noexcept {
+  return format == EngineFormat::kExr || format == EngineFormat::kTiff;
+}
 
-} // namespace
+const char* formatName(EngineFormat format) noexcept {
+  switch (format) {
+  case EngineFormat::kR16:
+    return "r16";
+  case EngineFormat::kPng16:
+    return "png16";
+  case EngineFormat::kExr:
+    return "exr";
+  default:
+    return "tif";
+  }
+}
 
 base::Status checkSize(Engine engine, int size) {
   const std::vector<int> sizes = validSizes(engine);
@@ -122,8 +147,10 @@ std::string sidecarJson(Engine engine, EngineFormat format, const HeightmapExten
   const double range = e.maxHeight - e.minHeight;
   nlohmann::ordered_json j;
   j["engine"] = engineName(engine);
-  j["format"] = format == EngineFormat::kR16 ? "r16" : "png16";
-  j["byteOrder"] = format == EngineFormat::kR16 ? "little-endian" : "big-endian (PNG)";
+  j["format"] = formatName(format);
+  j["byteOrder"] = format == EngineFormat::kR16     ? "little-endian"
+                   : format == EngineFormat::kPng16 ? "big-endian (PNG)"
+                                                    : "float32 (the container's)";
   j["width"] = e.size;
   j["height"] = e.size;
   j["row0"] = southRowFirst(engine) ? "south" : "north";
@@ -133,7 +160,8 @@ std::string sidecarJson(Engine engine, EngineFormat format, const HeightmapExten
   j["metresPerPixel"] = {{"x", mppX}, {"y", mppY}};
   j["minHeight"] = e.minHeight;
   j["maxHeight"] = e.maxHeight;
-  j["encoding"] = "height = minHeight + value / 65535 * (maxHeight - minHeight)";
+  j["encoding"] = isFloat(format) ? "height = value (float32 metres)"
+                                  : "height = minHeight + value / 65535 * (maxHeight - minHeight)";
   if (e.tilesX > 1 || e.tilesY > 1)
     j["tiles"] = {{"x", e.tilesX},
                   {"y", e.tilesY},
@@ -158,8 +186,9 @@ std::string sidecarJson(Engine engine, EngineFormat format, const HeightmapExten
                    {"locationZcm", (e.minHeight + e.maxHeight) / 2 * 100}};
     break;
   case Engine::kGodot:
-    j["godot"] = {{"heightScale", range},
-                  {"heightOffset", e.minHeight},
+    // Terrain3D multiplies by the scale, then adds the offset: EXR holds metres already.
+    j["godot"] = {{"heightScale", isFloat(format) ? 1.0 : range},
+                  {"heightOffset", isFloat(format) ? 0.0 : e.minHeight},
                   {"r16Range", {e.minHeight, e.maxHeight}},
                   {"r16Size", {e.size, e.size}},
                   {"vertexSpacing", mppX}};

@@ -14,15 +14,23 @@ namespace strahler::app {
 enum class Engine { kUnity, kUnreal, kGodot, kRaw };
 
 /// The heightmap file formats export-heightmap writes.
-enum class EngineFormat { kR16, kPng16 };
+enum class EngineFormat {
+  kR16,   ///< 16-bit unsigned samples, little-endian, no header.
+  kPng16, ///< 16-bit grey PNG.
+  kExr,   ///< OpenEXR, one float32 channel of metres (not quantised).
+  kTiff,  ///< TIFF, one float32 channel of metres (not quantised).
+};
 
+/// The engine's --engine name.
+const char* engineName(Engine engine) noexcept;
 /// Parses "unity", "unreal", "godot" or "raw".
 base::Result<Engine> parseEngine(const std::string& name);
-/// Parses --format: "r16" or "png16" (kInvalidInput names exr and tif as not written yet).
+/// Parses --format: "r16", "png16", "exr" or "tif".
 base::Result<EngineFormat> parseEngineFormat(const std::string& name);
 /// The format an engine gets without --format (Unity and Godot r16, Unreal png16, raw r16).
 EngineFormat defaultFormat(Engine engine) noexcept;
-/// kInvalidInput when `engine` cannot import `format` (Unity reads RAW only).
+/// kInvalidInput when `engine` cannot import `format`: Unity reads RAW only, Unreal 16-bit
+/// PNG or RAW, Godot (Terrain3D) r16, PNG or EXR but not TIFF.
 base::Status checkFormat(Engine engine, EngineFormat format);
 
 /// Every valid side length of `engine`, ascending: Unity 2^n + 1 for 33 … 4097; Unreal
@@ -35,6 +43,11 @@ base::Status checkSize(Engine engine, int size);
 /// True when the engine reads row 0 as the southern edge (Unity's RAW, "Flip Vertically" off);
 /// the others read row 0 as the northern edge (north up, x east).
 bool southRowFirst(Engine engine) noexcept;
+
+/// True for the float formats (EXR, TIFF), which hold metres instead of 16-bit values.
+bool isFloat(EngineFormat format) noexcept;
+/// The format's --format name.
+const char* formatName(EngineFormat format) noexcept;
 
 /// Heights mapped linearly from [minHeight, maxHeight] to 0 … 65535 (rounded; a flat box
 /// gives 0 everywhere).

@@ -12,6 +12,7 @@
 #include "strahler/encoding/grey_png.h"
 #include "strahler/geometry/aabb.h"
 #include "strahler/geometry/projection.h"
+#include "strahler/image/image.h"
 #include "strahler/store/world_file.h"
 #include "strahler/tiling/tile_evaluator.h"
 
@@ -38,17 +39,18 @@ using Clock = std::chrono::steady_clock;
 constexpr const char* kUsage =
     "usage: strahler export-heightmap WORLD.world --engine unity|unreal|godot|raw -o PATH\n"
     "                       [--bbox W,S,E,N | --local X0,Y0,X1,Y1] [--size N]\n"
-    "                       [--format r16|png16] [--tiles AxB] [--threads N] [--quiet]\n"
-    "Writes a 16-bit heightmap of the box (default: the world's land) for a game engine,\n"
-    "N × N samples edge to edge, evaluated at the export's own spacing, heights min..max of\n"
-    "the box mapped to 0..65535, and PATH's stem + .json: bounds, metres per pixel, heights\n"
-    "and the engine's import numbers. --bbox in degrees, --local in metres of the world's\n"
+    "                       [--format r16|png16|exr|tif] [--tiles AxB] [--threads N] [--quiet]\n"
+    "Writes a heightmap of the box (default: the world's land) for a game engine, N × N\n"
+    "samples edge to edge, evaluated at the export's own spacing: 16-bit, the box's heights\n"
+    "min..max mapped to 0..65535 (exr and tif: float32 metres), and PATH's stem + .json:\n"
+    "bounds, metres per pixel, heights and the engine's import numbers. --bbox in degrees, --local "
+    "in metres of the world's\n"
     "local frame (x east, y north). Engines:\n"
     "  unity   r16 (RAW, little-endian), row 0 south (Flip Vertically off), N = 2^n+1, 33..4097\n"
     "  unreal  png16 (default) or r16, row 0 north, N from its component rules (505, 1009,\n"
     "          2017, 4033, 8129, ...); --tiles AxB writes PATH_x{A}_y{B} tiles sharing edges\n"
-    "  godot   r16 (default) or png16 for Terrain3D, row 0 north, N in 2..16385\n"
-    "  raw     r16 (default) or png16, row 0 north, N in 2..16385\n"
+    "  godot   r16 (default), exr or png16 for Terrain3D, row 0 north, N in 2..16385\n"
+    "  raw     r16 (default), png16, exr or tif, row 0 north, N in 2..16385\n"
     "Default N: 1025 (unity, godot, raw), 1009 (unreal). --threads: default all cores; the\n"
     "bytes are the same for any count. Files are written to PATH.tmp.PID and renamed when\n"
     "complete; on an error or SIGINT/SIGTERM nothing is left. Memory: N² × 4 bytes (68 MB at\n"
@@ -208,8 +210,15 @@ std::vector<float> evaluateBlock(const tiling::TileEvaluator& evaluator, const E
 /// The bytes of one heightmap file: `heights` (width × height, row 0 north) quantised.
 base::Result<std::string> encodeFile(const Options& o, const std::vector<float>& heights, int width,
                                      int height, double minHeight, double maxHeight) {
-  std::vector<std::uint16_t> values(heights.size());
   const bool flip = southRowFirst(o.engine);
+  if (isFloat(o.format)) { // metres as they are; no engine that flips takes these formats
+    if (flip)
+      return makeError(ErrorCode::kInternal, "float heightmaps are written north row first");
+    return image::encodeFloatImage(heights, width, height,
+                                   o.format == EngineFormat::kExr ? image::FloatImageFormat::kExr
+                                                                  : image::FloatImageFormat::kTiff);
+  }
+  std::vector<std::uint16_t> values(heights.size());
   for (int r = 0; r < height; ++r) {
     const int out = flip ? height - 1 - r : r;
     for (int c = 0; c < width; ++c)
@@ -421,7 +430,7 @@ int exportHeightmap(const Options& o, construction::WorldData data) {
                  "exported a %d × %d heightmap (%zu file%s, %s) to %s in %.1f s (%d threads); "
                  "heights %.2f … %.2f m; sidecar %s\n",
                  o.size, o.size, outputs.size(), outputs.size() == 1 ? "" : "s",
-                 o.format == EngineFormat::kR16 ? "r16" : "png16", o.output.c_str(),
+                 formatName(o.format), o.output.c_str(),
                  std::chrono::duration<double>(Clock::now() - start).count(), o.threads,
                  extent.minHeight, extent.maxHeight, sidecar.c_str());
   return 0;

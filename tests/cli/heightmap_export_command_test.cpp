@@ -7,6 +7,7 @@
 #include "serve_process.h"
 
 #include "strahler/construction/world.h"
+#include "strahler/image/image.h"
 #include "strahler/store/world_file.h"
 
 #include <gtest/gtest.h>
@@ -189,6 +190,37 @@ TEST(ExportHeightmap, GodotAndRawWriteR16NorthRowFirstInABox) {
   EXPECT_EQ(readSidecar(dir / "godot.json")["godot"]["r16Size"][0], 100);
 }
 
+TEST(ExportHeightmap, GodotExrAndRawTiffHoldMetresNorthRowFirst) {
+  const fs::path dir = outputDir("float");
+  for (const auto& [engine, ext] : {std::pair{"godot", "exr"}, std::pair{"raw", "tif"}}) {
+    const fs::path file = dir / (std::string(engine) + "." + ext);
+    const ProcessRun run =
+        strahler("export-heightmap " + islandWorld().string() + " --engine " + engine +
+                 " --format " + ext + " --size 97 --quiet -o " + file.string());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    // Read back through OpenImageIO (the image module), not the writer's code.
+    const auto image = strahler::image::readFloatRaster(file.string());
+    ASSERT_TRUE(image) << image.error().message;
+    ASSERT_EQ(image.value().width, 97);
+    ASSERT_EQ(image.value().height, 97);
+    const nlohmann::json side = readSidecar(dir / (std::string(engine) + ".json"));
+    EXPECT_EQ(side["row0"], "north");
+    const double x0 = side["localBounds"]["x0"], x1 = side["localBounds"]["x1"];
+    const double y0 = side["localBounds"]["y0"], y1 = side["localBounds"]["y1"];
+    const double dx = (x1 - x0) / 96, dy = (y1 - y0) / 96;
+    const auto& pixels = image.value().pixels;
+    const auto top =
+        static_cast<int>(std::max_element(pixels.begin(), pixels.end()) - pixels.begin());
+    EXPECT_FLOAT_EQ(pixels[static_cast<std::size_t>(top)], side["maxHeight"].get<float>());
+    for (const int i : {top, 0, 96, 48 * 97 + 20, 96 * 97})
+      EXPECT_NEAR(pixels[static_cast<std::size_t>(i)],
+                  loadedWorld().height({x0 + (i % 97) * dx, y1 - (i / 97) * dy}, std::min(dx, dy)),
+                  1e-3)
+          << engine << " pixel " << i;
+  }
+  EXPECT_EQ(readSidecar(dir / "godot.json")["godot"]["heightScale"], 1.0);
+}
+
 TEST(ExportHeightmap, UnrealTilesShareTheirEdgesAndMatchTheWholeExport) {
   const fs::path dir = outputDir("tiles");
   const std::string common = "export-heightmap " + islandWorld().string() +
@@ -246,7 +278,10 @@ TEST(ExportHeightmap, RefusesBadInputWithAPreciseMessageAndWritesNothing) {
       {"--engine unity --size 5000", "the nearest valid sizes are 4097"},
       {"--engine unreal --size 1000", "the nearest valid sizes are 993 or 1009"},
       {"--engine unity --format png16", "Unity imports 16-bit RAW heightmaps only"},
-      {"--engine unity --format exr", "--format exr: not written yet"},
+      {"--engine unity --format exr", "Unity imports 16-bit RAW heightmaps only"},
+      {"--engine unreal --format exr", "Unreal imports 16-bit PNG or RAW heightmaps"},
+      {"--engine godot --format tif", "Godot cannot load TIFF"},
+      {"--engine raw --format jpg", "--format jpg: use r16, png16, exr or tif"},
       {"--engine cryengine", "--engine cryengine: use unity, unreal, godot or raw"},
       {"--engine unity --bbox 10,50,11", "--bbox"},
       {"--engine unity --bbox 100,10,101,11", "does not overlap the world's land"},
