@@ -8,6 +8,7 @@
 #include "strahler/render/shaded_relief.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace {
@@ -62,7 +63,16 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", status.error().message.c_str());
     return 1;
   }
-  std::printf("stable %d after %d final sweeps\n", eroded.value().stable ? 1 : 0,
-              eroded.value().finalSweeps);
+  const std::vector<double> after = eroded.value().surface();
+  double most = 0.0, total = 0.0, sediment = 0.0;
+  for (std::size_t i = 0; i < after.size(); ++i) {
+    most = std::max(most, std::abs(after[i] - before[i]));
+    total += std::abs(after[i] - before[i]);
+    sediment = std::max(sediment, eroded.value().sediment[i]);
+  }
+  std::printf("stable %d after %d final sweeps; |change| max %.2f m, mean %.3f m; deepest "
+              "sediment %.2f m\n",
+              eroded.value().stable ? 1 : 0, eroded.value().finalSweeps, most,
+              total / static_cast<double>(after.size()), sediment);
   return 0;
 }

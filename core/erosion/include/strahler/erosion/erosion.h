@@ -15,8 +15,8 @@ struct Params {
   int iterations = 50;      ///< N rounds, 0 … kMaxIterations.
   bool thermal = true;      ///< Run the thermal step (--erode thermal).
   bool hydraulic = true;    ///< Run the hydraulic step (--erode hydraulic).
-  double thermalRate = 0.2; ///< Seed's T (thermal): m of bedrock weathered per round at I·tanβ = 1.
-  double hydraulicRate = 0.5; ///< Seed's T (hydraulic): m carried downhill per round at H·tanβ = 1.
+  double thermalRate = 1.0; ///< Seed's T (thermal): m of bedrock weathered per round at I·tanβ = 1.
+  double hydraulicRate = 2.0; ///< Seed's T (hydraulic): m carried downhill per round at H·tanβ = 1.
   double talusDegrees = 45.0;  ///< The seed's talus angle (isStable: tan 45), in (0, 90).
   double toleranceM = 0.01;    ///< Stabilisation ends when no cell can shed more than this, m.
   int sweepsPerIteration = 4;  ///< Stabilisation sweeps in each round, ≥ 1.
