@@ -81,21 +81,27 @@ try {
   await game.waitForFunction(() => window.strahlerGame?.frames > 5, null, { timeout: WAIT_MS });
   const centre = await game.evaluate(() => window.strahlerGame.world.center);
   const [x, y] = toLocal(centre, lon, lat);
-  // 250 m above the spot, 1.5 km south of it, looking north and a little down.
+  // 1.5 km south of the spot, 250 m above the higher of the spot and the loaded terrain under
+  // the camera (so that a slope rising south of the spot does not swallow it), looking north.
   await game.evaluate(([gx, gz, h]) => {
-    const c = window.strahlerGame.camera;
-    c.position.set(gx, h + 250, gz + 1500);
-    c.lookAt(gx, h, gz - 500);
+    const g = window.strahlerGame;
+    const under = g.groundAt(gx, gz + 1500) ?? h;
+    g.camera.position.set(gx, Math.max(h, under) + 250, gz + 1500);
+    g.camera.lookAt(gx, h, gz - 500);
   }, [x, -y, ground]);
   await game.waitForFunction(() => {
     const g = window.strahlerGame;
+    // Quiet for 3 s and 3 frames: software GL on a loaded host draws about one frame a second.
     if (g.stats.inFlight > 0) { g.quietSince = undefined; return false; }
-    g.quietSince ??= g.frames;
-    return g.frames - g.quietSince > 30;
+    g.quietSince ??= { frames: g.frames, at: performance.now() };
+    return g.frames - g.quietSince.frames >= 3 && performance.now() - g.quietSince.at > 3000;
   }, null, { timeout: WAIT_MS, polling: 100 });
   writeFileSync(`${prefix}-game.png`, await game.screenshot());
   console.log(`wrote ${prefix}-viewer.png and ${prefix}-game.png (ground ${ground.toFixed(0)} m)`);
+} catch (error) {
+  console.error(`screenshots: ${error.message}`);
+  process.exitCode = 1;
 } finally {
   await browser.close();
-  process.exit(0);
+  process.exit(process.exitCode ?? 0);
 }
