@@ -119,22 +119,14 @@ std::vector<double> humidity(const BorderedHeights& grid, std::span<const double
   STRAHLER_ASSERT(wetness.size() ==
                       static_cast<std::size_t>(grid.width) * static_cast<std::size_t>(grid.height),
                   "humidity: one wetness per pixel");
-  std::vector<double> out;
-  out.reserve(static_cast<std::size_t>(grid.width) * static_cast<std::size_t>(grid.height));
-  for (int y = 0; y < grid.height; ++y)
-    for (int x = 0; x < grid.width; ++x) {
-      if (grid.at(x, y) < 0.0) {
-        out.push_back(1.0);
-        continue;
-      }
-      const Gradient g = gradientAt(grid, x, y);
-      const double river =
-          wetness[static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) +
-                  static_cast<std::size_t>(x)];
-      out.push_back(std::max(river, localWetness(std::sqrt(g.dzdx * g.dzdx + g.dzdy * g.dzdy),
-                                                 concavityAt(grid, x, y))));
-    }
-  return out;
+  return perPixel(grid, [&](int x, int y) {
+    if (grid.at(x, y) < 0.0)
+      return 1.0;
+    const double river =
+        wetness[static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) +
+                static_cast<std::size_t>(x)];
+    return std::max(river, localWetness(tanSlope(gradientAt(grid, x, y)), concavityAt(grid, x, y)));
+  });
 }
 
 } // namespace strahler::layers

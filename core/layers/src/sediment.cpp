@@ -14,16 +14,9 @@ double sedimentOf(double tanSlope, double concavity) noexcept {
 }
 
 std::vector<double> sedimentThickness(const BorderedHeights& grid) {
-  grid.check();
-  std::vector<double> out;
-  out.reserve(static_cast<std::size_t>(grid.width) * static_cast<std::size_t>(grid.height));
-  for (int y = 0; y < grid.height; ++y)
-    for (int x = 0; x < grid.width; ++x) {
-      const Gradient g = gradientAt(grid, x, y);
-      out.push_back(
-          sedimentOf(std::sqrt(g.dzdx * g.dzdx + g.dzdy * g.dzdy), concavityAt(grid, x, y)));
-    }
-  return out;
+  return perPixel(grid, [&](int x, int y) {
+    return sedimentOf(tanSlope(gradientAt(grid, x, y)), concavityAt(grid, x, y));
+  });
 }
 
 } // namespace strahler::layers

@@ -1,6 +1,9 @@
 #pragma once
 
+#include <cmath>
+#include <cstddef>
 #include <span>
+#include <vector>
 
 namespace strahler::layers {
 
@@ -40,8 +43,25 @@ struct BorderedHeights {
 /// tiles' hillshade takes it).
 Gradient gradientAt(const BorderedHeights& grid, int x, int y) noexcept;
 
+/// tan of the slope angle: the gradient's length, m per m.
+inline double tanSlope(Gradient g) noexcept {
+  return std::sqrt(g.dzdx * g.dzdx + g.dzdy * g.dzdy);
+}
+
 /// (mean of the four neighbours − h) / spacing at pixel (x, y), m per m: > 0 in hollows and
 /// valleys (where sediment and water collect), < 0 on crests.
 double concavityAt(const BorderedHeights& grid, int x, int y) noexcept;
+
+/// `value(x, y)` for every pixel inside the border, row-major, row 0 north (after check()).
+template <class PixelValue>
+std::vector<double> perPixel(const BorderedHeights& grid, PixelValue value) {
+  grid.check();
+  std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(grid.width) * static_cast<std::size_t>(grid.height));
+  for (int y = 0; y < grid.height; ++y)
+    for (int x = 0; x < grid.width; ++x)
+      out.push_back(value(x, y));
+  return out;
+}
 
 } // namespace strahler::layers
