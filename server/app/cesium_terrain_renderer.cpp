@@ -1,6 +1,5 @@
 #include "cesium_terrain_renderer.h"
 
-#include "gzip.h"
 #include "render_clock.h"
 
 #include "strahler/encoding/quantized_mesh.h"
@@ -49,12 +48,7 @@ base::Result<RenderedTile> CesiumTerrainRenderer::render(const RenderContext& co
     STRAHLER_ASSIGN_OR_RETURN(out.bytes, encoding::encodeQuantizedMesh(grid, options));
     out.encodeMs = millisecondsSince(start);
   }
-  if (request.options.gzip) {
-    const auto start = RenderClock::now();
-    out.bytes = gzip::compress(out.bytes, gzip::Level::kFastest);
-    out.contentEncoding = "gzip";
-    out.encodeMs += millisecondsSince(start);
-  }
+  gzipIfAsked(request, out);
   out.mimeType = "application/vnd.quantized-mesh";
   return out;
 }

@@ -40,6 +40,10 @@ inline std::vector<double> evaluateGrid(const RenderContext& context,
   return heights;
 }
 
+/// Gzips `out`'s bytes when `request` asks for it (Content-Encoding: gzip, the fastest level),
+/// adding the time to encodeMs: the last step of the renderers whose tiles travel gzipped.
+void gzipIfAsked(const TileRequest& request, RenderedTile& out);
+
 class TileRenderer {
 public:
   virtual ~TileRenderer() = default;

@@ -1,6 +1,5 @@
 #include "vector_tile_renderer.h"
 
-#include "gzip.h"
 #include "render_clock.h"
 
 #include "strahler/vector_tile/vector_tile.h"
@@ -32,12 +31,9 @@ base::Result<RenderedTile> VectorTileRenderer::render(const RenderContext& conte
   tile.layers.push_back(riversLayer(world, request.tile));
   tile.layers.push_back(featuresLayer(world, request.tile));
   out.bytes = vector_tile::encodeTile(tile);
-  if (request.options.gzip) {
-    out.bytes = gzip::compress(out.bytes, gzip::Level::kFastest);
-    out.contentEncoding = "gzip";
-  }
   out.mimeType = "application/vnd.mapbox-vector-tile";
   out.encodeMs = millisecondsSince(start);
+  gzipIfAsked(request, out);
   return out;
 }
 

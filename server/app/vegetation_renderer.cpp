@@ -1,6 +1,5 @@
 #include "vegetation_renderer.h"
 
-#include "gzip.h"
 #include "lattice_density.h"
 #include "render_clock.h"
 
@@ -51,12 +50,9 @@ base::Result<RenderedTile> VegetationRenderer::render(const RenderContext& conte
   for (const vegetation::Instance& i : instances)
     heights.push_back(density.heightAt(i.position));
   out.bytes = vegetation::writeVegetationJson(tile, projection, instances, heights);
-  if (request.options.gzip) {
-    out.bytes = gzip::compress(out.bytes, gzip::Level::kFastest);
-    out.contentEncoding = "gzip";
-  }
   out.mimeType = "application/json";
   out.encodeMs = millisecondsSince(start);
+  gzipIfAsked(request, out);
   return out;
 }
 
