@@ -15,7 +15,7 @@ import { execFileSync } from "node:child_process";
 import fs from "node:fs";
 import path from "node:path";
 
-import { fail, load, openPmtiles } from "./pmtiles_file.mjs";
+import { fail, load, openPmtiles, webTileRange } from "./pmtiles_file.mjs";
 
 const [dir, strahler] = process.argv.slice(2);
 if (!dir || !strahler) fail("usage: node check_pmtiles_layer.mjs <dir> <strahler>");
@@ -41,16 +41,7 @@ expect(/^strahler vegetation: 8-bit grey PNG/.test(metadata.layerEncoding ?? "")
   `metadata layerEncoding ${metadata.layerEncoding}`);
 expect(metadata.encoding === undefined, `a layer has no raster-dem encoding: ${metadata.encoding}`);
 
-const tileX = (lon, z) => ((lon + 180) / 360) * 2 ** z;
-const tileY = (lat, z) => ((1 - Math.asinh(Math.tan((lat * Math.PI) / 180)) / Math.PI) / 2) * 2 ** z;
-function range(z) {
-  const clamp = (v, lo) => Math.min(Math.max(v, lo), 2 ** z - 1);
-  const x0 = clamp(Math.floor(tileX(header.minLon, z)), 0);
-  const x1 = clamp(Math.ceil(tileX(header.maxLon, z)) - 1, x0);
-  const y0 = clamp(Math.floor(tileY(header.maxLat, z)), 0);
-  const y1 = clamp(Math.ceil(tileY(header.minLat, z)) - 1, y0);
-  return { x0, x1, y0, y1 };
-}
+const range = (z) => webTileRange(header, z);
 
 const scratch = fs.mkdtempSync(path.join(dir, "layer-tiles-"));
 function serverTile(z, x, y) {
