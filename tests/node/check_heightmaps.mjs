@@ -13,6 +13,7 @@
 
 import fs from "node:fs";
 import path from "node:path";
+import { loadPng } from "./png_samples.mjs";
 
 // Rounding in the decoder's own double arithmetic may exceed a tolerance by a few ulps.
 const SLACK = 1e-9;
@@ -37,18 +38,6 @@ const FORMATS = {
     decode: (d, i) => d[4 * i] * 0.1 - 1000,
   },
 };
-
-async function loadPng() {
-  try {
-    return (await import("pngjs")).PNG;
-  } catch (error) {
-    console.error(
-      `FAIL: cannot load pngjs (${error.message}).\n` +
-        "Install the test decoders first: npm ci --prefix tests/node",
-    );
-    process.exit(1);
-  }
-}
 
 /** Compares one PNG with its expected heights; returns a list of problems (empty when fine). */
 function checkSample(PNG, pngPath, expected) {

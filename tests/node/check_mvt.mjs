@@ -21,22 +21,16 @@
 
 import fs from "node:fs";
 import path from "node:path";
+import { load } from "./decoders.mjs";
 
 const EXTENT = 4096;
 const RIVER_TOLERANCE = 3; // tile units: 1 of simplification, rounding, and slack
 
+/** A function decoding MVT bytes with @mapbox/vector-tile over pbf (npm). */
 async function loadDecoder() {
-  try {
-    const { VectorTile } = await import("@mapbox/vector-tile");
-    const { PbfReader } = await import("pbf");
-    return (bytes) => new VectorTile(new PbfReader(bytes));
-  } catch (error) {
-    console.error(
-      `FAIL: cannot load @mapbox/vector-tile or pbf (${error.message}).\n` +
-        "Install the test decoders first: npm ci --prefix tests/node",
-    );
-    process.exit(1);
-  }
+  const { VectorTile } = await load("@mapbox/vector-tile");
+  const { PbfReader } = await load("pbf");
+  return (bytes) => new VectorTile(new PbfReader(bytes));
 }
 
 /** Tile coordinates of a longitude/latitude in tile z/x/y (spherical Web Mercator). */

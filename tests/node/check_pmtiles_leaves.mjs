@@ -5,32 +5,13 @@
 //
 // Usage: node check_pmtiles_leaves.mjs <file>. Exits 1 on any mismatch.
 
-import fs from "node:fs";
+import { fail, load, openPmtiles } from "./pmtiles_file.mjs";
 
-function fail(message) {
-  console.error(`FAIL: ${message}`);
-  process.exit(1);
-}
-
-let pmtiles;
-try {
-  pmtiles = await import("pmtiles");
-} catch (error) {
-  fail(`cannot load pmtiles (${error.message}).\nInstall the test decoders first: npm ci --prefix tests/node`);
-}
-const { PMTiles, tileIdToZxy, zxyToTileId } = pmtiles;
+const { tileIdToZxy, zxyToTileId } = await load("pmtiles");
 
 const file = process.argv[2];
 if (!file) fail("usage: node check_pmtiles_leaves.mjs <file>");
-const fd = fs.openSync(file, "r");
-const archive = new PMTiles({
-  getKey: () => file,
-  getBytes: async (offset, length) => {
-    const buffer = Buffer.alloc(length);
-    const read = fs.readSync(fd, buffer, 0, length, offset);
-    return { data: buffer.buffer.slice(buffer.byteOffset, buffer.byteOffset + read) };
-  },
-});
+const archive = await openPmtiles(file);
 
 const header = await archive.getHeader();
 if (header.leafDirectoryLength === 0) fail("no leaf directories");

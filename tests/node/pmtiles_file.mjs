@@ -1,24 +1,11 @@
-// What the PMTiles checks share: failing with a message, loading an npm decoder with a hint
-// when it is missing, and opening a PMTiles archive from a local file through the `pmtiles`
-// library's Source interface (byte ranges read with fs), and the Web Mercator tiles that cover
-// an archive's bounds.
+// What the PMTiles checks share: fail and load (from decoders.mjs), a PMTiles archive opened
+// from a local file through the `pmtiles` library's Source interface (byte ranges read with
+// fs), and the Web Mercator tiles that cover an archive's bounds.
 
 import fs from "node:fs";
+import { fail, load } from "./decoders.mjs";
 
-/** Prints FAIL: `message` and exits 1. */
-export function fail(message) {
-  console.error(`FAIL: ${message}`);
-  process.exit(1);
-}
-
-/** The module `name`, or fail() with how to install the test decoders. */
-export async function load(name) {
-  try {
-    return await import(name);
-  } catch (error) {
-    fail(`cannot load ${name} (${error.message}).\nInstall the test decoders first: npm ci --prefix tests/node`);
-  }
-}
+export { fail, load };
 
 /** A pmtiles Source over a local file. */
 class FileRangeSource {

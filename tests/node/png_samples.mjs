@@ -3,18 +3,11 @@
 // and its "east" neighbour.
 
 import fs from "node:fs";
+import { load } from "./decoders.mjs";
 
 /** pngjs's PNG, or exit 1 with how to install it. */
 export async function loadPng() {
-  try {
-    return (await import("pngjs")).PNG;
-  } catch (error) {
-    console.error(
-      `FAIL: cannot load pngjs (${error.message}).\n` +
-        "Install the test decoders first: npm ci --prefix tests/node",
-    );
-    process.exit(1);
-  }
+  return (await load("pngjs")).PNG;
 }
 
 /**
