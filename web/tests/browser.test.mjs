@@ -43,6 +43,26 @@ async function waitForIdleMap(page) {
     else map.once('idle', resolve);
   }), STEP_MS);
 }
+
+// Clicks a vertex of a rendered river right of `minX` px (clear of the panel on the left) and
+// returns the text of the popup it opens.
+async function clickRiver(page, minX) {
+  const point = await page.evaluate((left) => {
+    const map = window.strahlerMap;
+    const { width, height } = map.getCanvas().getBoundingClientRect();
+    for (const f of map.queryRenderedFeatures({ layers: ['rivers'] })) {
+      for (const c of f.geometry.type === 'LineString' ? f.geometry.coordinates : f.geometry.coordinates.flat()) {
+        const p = map.project(c);
+        if (p.x > left && p.x < width - 60 && p.y > 60 && p.y < height - 60) return { x: p.x, y: p.y };
+      }
+    }
+    return null;
+  }, minX);
+  assert.ok(point, 'no river vertex on screen');
+  await page.mouse.click(point.x, point.y);
+  return page.locator('.maplibregl-popup-content').innerText({ timeout: 10_000 });
+}
+
 const watchdog = setTimeout(() => {
   console.error(`browser tests exceeded ${TOTAL_MS} ms`);
   process.exit(1); // the server is killed by its exit hook, chromium when its pipe closes
@@ -104,21 +124,7 @@ describe('map viewer', () => {
   });
 
   test('click on a river: popup with elevation, Strahler order, flow, Rosgen type and width', async () => {
-    // The screen point of a vertex of a rendered river, away from the panel on the left.
-    const point = await page.evaluate(() => {
-      const map = window.strahlerMap;
-      const { width, height } = map.getCanvas().getBoundingClientRect();
-      for (const f of map.queryRenderedFeatures({ layers: ['rivers'] })) {
-        for (const c of f.geometry.type === 'LineString' ? f.geometry.coordinates : f.geometry.coordinates.flat()) {
-          const p = map.project(c);
-          if (p.x > 320 && p.x < width - 60 && p.y > 60 && p.y < height - 60) return { x: p.x, y: p.y };
-        }
-      }
-      return null;
-    });
-    assert.ok(point, 'no river vertex on screen');
-    await page.mouse.click(point.x, point.y);
-    const text = await page.locator('.maplibregl-popup-content').innerText({ timeout: 10_000 });
+    const text = await clickRiver(page, 320);
     assert.match(text, /Elevation ≈ -?\d+ m/);
     assert.match(text, /Strahler order \d/);
     assert.match(text, /Flow [\d.]+ m³\/s · Rosgen type (B|E|D|D-delta)/);
@@ -335,20 +341,7 @@ describe('map viewer layers, contours and rivers from the vector tiles (?rivers=
   });
 
   test('click on a river of the vector tiles: popup with its order, flow, type and width', async () => {
-    const point = await page.evaluate(() => {
-      const map = window.strahlerMap;
-      const { width, height } = map.getCanvas().getBoundingClientRect();
-      for (const f of map.queryRenderedFeatures({ layers: ['rivers'] })) {
-        for (const c of f.geometry.type === 'LineString' ? f.geometry.coordinates : f.geometry.coordinates.flat()) {
-          const p = map.project(c);
-          if (p.x > 300 && p.x < width - 60 && p.y > 60 && p.y < height - 60) return { x: p.x, y: p.y };
-        }
-      }
-      return null;
-    });
-    assert.ok(point, 'no river vertex on screen');
-    await page.mouse.click(point.x, point.y);
-    const text = await page.locator('.maplibregl-popup-content').innerText({ timeout: 10_000 });
+    const text = await clickRiver(page, 300);
     assert.match(text, /Strahler order \d/);
     assert.match(text, /Flow [\d.]+ m³\/s · Rosgen type (B|E|D|D-delta)/);
     assert.match(text, /Channel \d+ m wide/);
