@@ -168,6 +168,20 @@ std::string sidecarJson(Engine engine, EngineFormat format, const HeightmapExten
                   {"width", (e.size - 1) / e.tilesX + 1},
                   {"height", (e.size - 1) / e.tilesY + 1},
                   {"names", "STEM_x{column}_y{row}, row 0 north; neighbours share edge samples"}};
+  if (const auto& r = e.erosion)
+    j["erosion"] = {{"model", "seed 004: bedrock + sediment, thermal and hydraulic erosion, "
+                              "talus stabilisation; this export only, served tiles are not eroded"},
+                    {"processes", r->processes},
+                    {"iterations", r->iterations},
+                    {"talusDegrees", r->talusDegrees},
+                    {"thermalRate", r->thermalRate},
+                    {"hydraulicRate", r->hydraulicRate},
+                    {"toleranceM", r->toleranceM},
+                    {"sweepsPerIteration", r->sweepsPerIteration},
+                    {"finalSweeps", r->finalSweeps},
+                    {"stable", r->stable},
+                    {"cellMetres", r->cellMetres},
+                    {"talusExcessM", r->talusExcessM}};
   switch (engine) {
   case Engine::kUnity:
     j["unity"] = {{"depth", "Bit 16"},
