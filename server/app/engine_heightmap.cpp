@@ -182,6 +182,16 @@ std::string sidecarJson(Engine engine, EngineFormat format, const HeightmapExten
                     {"stable", r->stable},
                     {"cellMetres", r->cellMetres},
                     {"talusExcessM", r->talusExcessM}};
+  if (const auto& sp = e.splat)
+    j["splat"] = {{"layers", sp->layers},
+                  {"files", sp->files},
+                  {"width", sp->width},
+                  {"height", sp->width},
+                  {"row0", "north"},
+                  {"column0", "west"},
+                  {"layout", sp->layout},
+                  {"sediment", sp->sediment},
+                  {"weights", "8-bit; the layers' weights sum to 255 at every pixel"}};
   switch (engine) {
   case Engine::kUnity:
     j["unity"] = {{"depth", "Bit 16"},

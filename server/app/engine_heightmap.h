@@ -69,6 +69,15 @@ struct ErosionRecord {
   double talusExcessM = 0;    ///< erosion::talusExcess of the result, m (≤ toleranceM).
 };
 
+/// The splat maps an export wrote (export-heightmap --splat), for the sidecar.
+struct SplatRecord {
+  std::vector<std::string> layers; ///< Layer names, in file / channel order.
+  std::vector<std::string> files;  ///< File names (no folder), in order.
+  int width = 0;                   ///< Pixels per side of each file.
+  std::string layout;              ///< How layers map to files and channels.
+  std::string sediment;            ///< Where the sediment layer comes from.
+};
+
 /// What a sidecar states about one export.
 struct HeightmapExtent {
   double west = 0, south = 0, east = 0, north = 0; ///< Degrees (the box's corners' bounds).
@@ -77,6 +86,7 @@ struct HeightmapExtent {
   double minHeight = 0, maxHeight = 0;             ///< m.
   int tilesX = 1, tilesY = 1;                      ///< Unreal's --tiles (1 × 1: one file).
   std::optional<ErosionRecord> erosion;            ///< Set when the export was eroded.
+  std::optional<SplatRecord> splat;                ///< Set when splat maps were written.
 };
 
 /// The sidecar JSON (bounds, metres per pixel, heights, the engine's import numbers).

@@ -4,6 +4,7 @@
 #include "cli_args.h"
 #include "command_support.h"
 #include "engine_heightmap.h"
+#include "engine_splat.h"
 #include "export_plan.h"
 #include "heightmap_erosion.h"
 #include "terminal_progress.h"
@@ -41,7 +42,7 @@ constexpr const char* kUsage =
     "usage: strahler export-heightmap WORLD.world --engine unity|unreal|godot|raw -o PATH\n"
     "                       [--bbox W,S,E,N | --local X0,Y0,X1,Y1] [--size N]\n"
     "                       [--format r16|png16|exr|tif] [--tiles AxB] [--threads N] [--quiet]\n"
-    "                       [--erode thermal,hydraulic [--iterations N] [--talus DEG]]\n"
+    "                       [--erode thermal,hydraulic [--iterations N] [--talus DEG]] [--splat]\n"
     "Writes a heightmap of the box (default: the world's land) for a game engine, N × N\n"
     "samples edge to edge, evaluated at the export's own spacing: 16-bit, the box's heights\n"
     "min..max mapped to 0..65535 (exr and tif: float32 metres), and PATH's stem + .json:\n"
@@ -62,7 +63,11 @@ constexpr const char* kUsage =
     "only: served tiles stay stateless and are never eroded. --iterations: rounds, 1..10000\n"
     "(default 50); --talus: degrees in (0, 90) (default 45). It needs square cells and N <= 4097:\n"
     "it holds the whole grid, ~72 bytes per sample (1.2 GB at 4097²); with --tiles the whole grid\n"
-    "is eroded, then cut into tiles. The sidecar's \"erosion\" records the parameters.\n";
+    "is eroded, then cut into tiles. The sidecar's \"erosion\" records the parameters.\n"
+    "--splat also writes layer weights (Ground, Rock, Sediment, Vegetation, Water; 8-bit, summing\n"
+    "to 255 per pixel, row 0 north): Unity STEM_alphamap0.png (RGBA: the first four) and\n"
+    "STEM_alphamap1.png (R: Water), (N-1)² texels; the others STEM_splat_LAYER.png, N² pixels.\n"
+    "Sediment is the erosion's with --erode, else the served sediment layer's local model.\n";
 
 /// What the command line asked for.
 struct Options {
@@ -76,6 +81,7 @@ struct Options {
   std::string output;
   bool quiet = false;
   std::optional<erosion::Params> erosion; ///< --erode's, when given.
+  bool splat = false;                     ///< --splat: weight maps beside the heightmap.
 };
 
 base::Result<std::vector<double>> parseNumbers(const std::string& option, const std::string& text,
@@ -157,6 +163,9 @@ base::Result<Options> parseOptions(const CliArgs& args) {
                      "--format png16 holds at most 4096 samples per side here; give --tiles "
                      "(e.g. 2x2) or --format r16");
   STRAHLER_ASSIGN_OR_RETURN(o.erosion, parseErosion(args));
+  o.splat = args.has("--splat");
+  if (o.splat)
+    STRAHLER_RETURN_IF_ERROR(checkSplat(o.engine, o.size, o.tilesX > 1 || o.tilesY > 1));
   if (o.erosion && o.size > kMaxErosionSize)
     STRAHLER_RETURN_IF_ERROR(checkErosionGrid(o.size, 1, 1));
   STRAHLER_ASSIGN_OR_RETURN(const auto threads, args.getInt("--threads", 1, 256));
@@ -274,7 +283,7 @@ std::string tilePath(const Options& o, int x, int y) {
 /// What the progress bar shows: rows evaluated, then (with --erode) erosion rounds, then the
 /// final stabilisation's sweeps (whose count is only known at the end: no ETA).
 struct ExportProgress {
-  enum Stage { kRows, kRounds, kSweeps };
+  enum Stage { kRows, kRounds, kSweeps, kSplat };
   std::atomic<int> stage{kRows};
   std::atomic<long long> done{0};
   std::atomic<long long> total{1};
@@ -298,10 +307,12 @@ void watchProgress(TerminalProgress& progress, const ExportProgress& state,
     if (fraction <= 0)
       continue;
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-    progress.update(stage == ExportProgress::kRows ? "export-heightmap" : "erosion",
+    progress.update(stage == ExportProgress::kRows    ? "export-heightmap"
+                    : stage == ExportProgress::kSplat ? "splat maps"
+                                                      : "erosion",
                     std::min(fraction, 1.0),
                     std::to_string(done) + "/" + std::to_string(total) +
-                        (stage == ExportProgress::kRows ? " rows" : " rounds") + ", ETA " +
+                        (stage == ExportProgress::kRounds ? " rounds" : " rows") + ", ETA " +
                         formatSeconds(elapsed / fraction * (1.0 - fraction)));
   }
 }
@@ -317,11 +328,11 @@ std::vector<float> cutTile(const std::vector<float>& rows, int width, int firstR
   return tile;
 }
 
-/// Evaluates the whole grid and erodes it (--erode): the heights, in metres.
-base::Result<std::vector<float>> erodedGrid(const Options& o,
-                                            const tiling::TileEvaluator& evaluator,
-                                            const ExportGrid& g, HeightmapExtent& extent,
-                                            ExportProgress& progress) {
+/// Evaluates the whole grid and erodes it (--erode): the heights, in metres; the sediment
+/// thickness per sample into `sediment`.
+base::Result<std::vector<float>>
+erodedGrid(const Options& o, const tiling::TileEvaluator& evaluator, const ExportGrid& g,
+           HeightmapExtent& extent, ExportProgress& progress, std::vector<float>& sediment) {
   std::vector<float> whole =
       evaluateBlock(evaluator, g, 0, g.size, 0, g.size, o.threads, progress.done);
   if (caughtSignal() != 0)
@@ -342,23 +353,59 @@ base::Result<std::vector<float>> erodedGrid(const Options& o,
   progress.stage.store(ExportProgress::kRounds);
   extent.erosion.emplace();
   STRAHLER_ASSIGN_OR_RETURN(
-      const std::vector<float> sediment,
-      erodeExportGrid(whole, g.size, std::sqrt(g.dx * g.dy), params, *extent.erosion));
-  (void)sediment;
+      sediment, erodeExportGrid(whole, g.size, std::sqrt(g.dx * g.dy), params, *extent.erosion));
   return whole;
+}
+
+/// Writes the --splat files of the whole grid `heights` (and the erosion's `sediment`, if any).
+base::Status writeSplat(const Options& o, const construction::World& world, const ExportGrid& g,
+                        const std::vector<float>& heights, const std::vector<float>& sediment,
+                        HeightmapExtent& extent,
+                        std::vector<std::unique_ptr<TemporaryOutput>>& outputs,
+                        ExportProgress& progress) {
+  progress.done.store(0);
+  progress.total.store(o.engine == Engine::kUnity ? g.size - 1 : g.size);
+  progress.stage.store(ExportProgress::kSplat);
+  STRAHLER_ASSIGN_OR_RETURN(const std::vector<SplatFile> files,
+                            renderSplat(world, o.engine,
+                                        SplatGrid{g.box, g.size, heights, sediment}, o.threads,
+                                        progress.done));
+  if (caughtSignal() != 0)
+    return makeError(ErrorCode::kInternal, "interrupted");
+  SplatRecord record;
+  for (const char* name : kSplatLayerNames)
+    record.layers.emplace_back(name);
+  record.width = o.engine == Engine::kUnity ? g.size - 1 : g.size;
+  record.layout = o.engine == Engine::kUnity
+                      ? "Unity alphamaps: alphamap0 RGBA = Ground, Rock, Sediment, Vegetation; "
+                        "alphamap1 R = Water (G, B, A 0); texel = mean of its 4 corner samples"
+                      : "one 8-bit grey PNG per layer, one pixel per heightmap sample";
+  record.sediment = sediment.empty() ? "proxy: the served sediment layer's local model "
+                                       "(layers::sedimentThickness), no --erode"
+                                     : "the erosion's sediment S (--erode)";
+  const std::string stem = splitExtension(o.output).first;
+  for (const SplatFile& file : files) {
+    const std::string name = stem + file.suffix;
+    outputs.push_back(std::make_unique<TemporaryOutput>(name));
+    STRAHLER_RETURN_IF_ERROR(writeBytes(*outputs.back(), file.bytes, name));
+    record.files.push_back(fs::path(name).filename().string());
+  }
+  extent.splat = std::move(record);
+  return base::Ok{};
 }
 
 /// Evaluates (and with --erode erodes) and writes every file (temporaries in `outputs`,
 /// committed by the caller).
-base::Status writeFiles(const Options& o, const tiling::TileEvaluator& evaluator,
-                        const ExportGrid& g, HeightmapExtent& extent,
+base::Status writeFiles(const Options& o, const construction::World& world,
+                        const tiling::TileEvaluator& evaluator, const ExportGrid& g,
+                        HeightmapExtent& extent,
                         std::vector<std::unique_ptr<TemporaryOutput>>& outputs,
                         ExportProgress& progress) {
   const bool tiled = o.tilesX > 1 || o.tilesY > 1;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  std::vector<float> whole;
+  std::vector<float> whole, sediment;
   if (o.erosion) {
-    STRAHLER_ASSIGN_OR_RETURN(whole, erodedGrid(o, evaluator, g, extent, progress));
+    STRAHLER_ASSIGN_OR_RETURN(whole, erodedGrid(o, evaluator, g, extent, progress, sediment));
     const auto [mn, mx] = std::minmax_element(whole.begin(), whole.end());
     lo = *mn, hi = *mx;
   } else {
@@ -385,7 +432,9 @@ base::Status writeFiles(const Options& o, const tiling::TileEvaluator& evaluator
     STRAHLER_ASSIGN_OR_RETURN(const std::string bytes,
                               encodeFile(o, whole, g.size, g.size, lo, hi));
     outputs.push_back(std::make_unique<TemporaryOutput>(o.output));
-    return writeBytes(*outputs.back(), bytes, o.output);
+    STRAHLER_RETURN_IF_ERROR(writeBytes(*outputs.back(), bytes, o.output));
+    return o.splat ? writeSplat(o, world, g, whole, sediment, extent, outputs, progress)
+                   : base::Status(base::Ok{});
   }
   const int sideX = (g.size - 1) / o.tilesX, sideY = (g.size - 1) / o.tilesY;
   for (int ty = 0; ty < o.tilesY; ++ty) {
@@ -483,7 +532,7 @@ int exportHeightmap(const Options& o, construction::WorldData data) {
     if (progress.enabled())
       watcher = std::thread([&] { watchProgress(progress, state, finished); });
     try {
-      status = writeFiles(o, evaluator, g, extent, outputs, state);
+      status = writeFiles(o, world, evaluator, g, extent, outputs, state);
     } catch (const std::exception& e) { // never leave without removing the temporary files
       status = makeError(ErrorCode::kInternal, std::string("export failed: ") + e.what());
     }
@@ -527,7 +576,7 @@ int runExportHeightmap(const std::vector<std::string>& raw) {
   auto parsed = CliArgs::parse("export-heightmap", raw,
                                {"--engine", "--format", "--size", "--bbox", "--local", "--tiles",
                                 "--threads", "-o", "--erode", "--iterations", "--talus"},
-                               {"--help", "-h", "--quiet"});
+                               {"--help", "-h", "--quiet", "--splat"});
   if (!parsed)
     return usageError(parsed.error(), kUsage);
   const CliArgs& args = parsed.value();
