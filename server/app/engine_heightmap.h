@@ -78,6 +78,15 @@ struct SplatRecord {
   std::string sediment;            ///< Where the sediment layer comes from.
 };
 
+/// The vegetation instances an export wrote (export-heightmap --vegetation), for the sidecar.
+struct VegetationRecord {
+  std::string file;    ///< File name (no folder).
+  std::string format;  ///< "csv" or "json".
+  long long count = 0; ///< Plants written.
+  int zoom = 0;        ///< The Web Mercator zoom of the vegetation tiles they come from.
+  long long tiles = 0; ///< Vegetation tiles placed.
+};
+
 /// What a sidecar states about one export.
 struct HeightmapExtent {
   double west = 0, south = 0, east = 0, north = 0; ///< Degrees (the box's corners' bounds).
@@ -87,6 +96,7 @@ struct HeightmapExtent {
   int tilesX = 1, tilesY = 1;                      ///< Unreal's --tiles (1 × 1: one file).
   std::optional<ErosionRecord> erosion;            ///< Set when the export was eroded.
   std::optional<SplatRecord> splat;                ///< Set when splat maps were written.
+  std::optional<VegetationRecord> vegetation;      ///< Set when instances were written.
 };
 
 /// The sidecar JSON (bounds, metres per pixel, heights, the engine's import numbers).

@@ -5,6 +5,7 @@
 #include "command_support.h"
 #include "engine_heightmap.h"
 #include "engine_splat.h"
+#include "engine_vegetation.h"
 #include "export_plan.h"
 #include "heightmap_erosion.h"
 #include "terminal_progress.h"
@@ -43,6 +44,7 @@ constexpr const char* kUsage =
     "                       [--bbox W,S,E,N | --local X0,Y0,X1,Y1] [--size N]\n"
     "                       [--format r16|png16|exr|tif] [--tiles AxB] [--threads N] [--quiet]\n"
     "                       [--erode thermal,hydraulic [--iterations N] [--talus DEG]] [--splat]\n"
+    "                       [--vegetation csv|json]\n"
     "Writes a heightmap of the box (default: the world's land) for a game engine, N × N\n"
     "samples edge to edge, evaluated at the export's own spacing: 16-bit, the box's heights\n"
     "min..max mapped to 0..65535 (exr and tif: float32 metres), and PATH's stem + .json:\n"
@@ -67,7 +69,13 @@ constexpr const char* kUsage =
     "--splat also writes layer weights (Ground, Rock, Sediment, Vegetation, Water; 8-bit, summing\n"
     "to 255 per pixel, row 0 north): Unity STEM_alphamap0.png (RGBA: the first four) and\n"
     "STEM_alphamap1.png (R: Water), (N-1)² texels; the others STEM_splat_LAYER.png, N² pixels.\n"
-    "Sediment is the erosion's with --erode, else the served sediment layer's local model.\n";
+    "Sediment is the erosion's with --erode, else the served sediment layer's local model.\n"
+    "--vegetation writes STEM_vegetation.csv|json: the plants the vegetation tiles serve (zoom "
+    "17)\n"
+    "in the box, standing on this heightmap: id, species, x, y, z, radius, scale, yaw. Unity\n"
+    "metres x east, y up, z north from the south-west corner; Unreal centimetres X east, Y\n"
+    "south, Z up from the north-west corner; Godot metres x east, y up, z south from the\n"
+    "north-west corner; raw local metres. Written a row of tiles at a time. Not with --tiles.\n";
 
 /// What the command line asked for.
 struct Options {
@@ -80,8 +88,9 @@ struct Options {
   std::optional<geometry::Aabb> local;
   std::string output;
   bool quiet = false;
-  std::optional<erosion::Params> erosion; ///< --erode's, when given.
-  bool splat = false;                     ///< --splat: weight maps beside the heightmap.
+  std::optional<erosion::Params> erosion;     ///< --erode's, when given.
+  bool splat = false;                         ///< --splat: weight maps beside the heightmap.
+  std::optional<VegetationFormat> vegetation; ///< --vegetation: the plants' file format.
 };
 
 base::Result<std::vector<double>> parseNumbers(const std::string& option, const std::string& text,
@@ -164,6 +173,13 @@ base::Result<Options> parseOptions(const CliArgs& args) {
                      "(e.g. 2x2) or --format r16");
   STRAHLER_ASSIGN_OR_RETURN(o.erosion, parseErosion(args));
   o.splat = args.has("--splat");
+  if (const auto vegetation = args.get("--vegetation")) {
+    STRAHLER_ASSIGN_OR_RETURN(o.vegetation, parseVegetationFormat(*vegetation));
+    if (o.tilesX > 1 || o.tilesY > 1)
+      return makeError(ErrorCode::kInvalidInput,
+                       "--vegetation with --tiles: the plants stand on the whole heightmap; "
+                       "export it without --tiles");
+  }
   if (o.splat)
     STRAHLER_RETURN_IF_ERROR(checkSplat(o.engine, o.size, o.tilesX > 1 || o.tilesY > 1));
   if (o.erosion && o.size > kMaxErosionSize)
@@ -283,7 +299,7 @@ std::string tilePath(const Options& o, int x, int y) {
 /// What the progress bar shows: rows evaluated, then (with --erode) erosion rounds, then the
 /// final stabilisation's sweeps (whose count is only known at the end: no ETA).
 struct ExportProgress {
-  enum Stage { kRows, kRounds, kSweeps, kSplat };
+  enum Stage { kRows, kRounds, kSweeps, kSplat, kPlants };
   std::atomic<int> stage{kRows};
   std::atomic<long long> done{0};
   std::atomic<long long> total{1};
@@ -394,6 +410,33 @@ base::Status writeSplat(const Options& o, const construction::World& world, cons
   return base::Ok{};
 }
 
+/// Writes the --vegetation file: the served plants in the box, standing on `heights`.
+base::Status writePlants(const Options& o, const construction::World& world,
+                         const tiling::TileEvaluator& evaluator, const ExportGrid& g,
+                         const std::vector<float>& heights, HeightmapExtent& extent,
+                         std::vector<std::unique_ptr<TemporaryOutput>>& outputs,
+                         ExportProgress& progress) {
+  progress.done.store(0);
+  progress.total.store(1);
+  progress.stage.store(ExportProgress::kPlants);
+  const bool csv = *o.vegetation == VegetationFormat::kCsv;
+  const std::string name =
+      splitExtension(o.output).first + "_vegetation" + (csv ? ".csv" : ".json");
+  outputs.push_back(std::make_unique<TemporaryOutput>(name));
+  std::ofstream out(outputs.back()->path(), std::ios::binary);
+  STRAHLER_ASSIGN_OR_RETURN(const VegetationCount count,
+                            writeVegetation(world, evaluator, o.engine, *o.vegetation,
+                                            VegetationGrid{g.box, g.size, heights}, o.threads, out,
+                                            progress.total, progress.done,
+                                            [] { return caughtSignal() != 0; }));
+  out.close();
+  if (!out)
+    return makeError(ErrorCode::kIoError, "cannot write '" + name + "'");
+  extent.vegetation = VegetationRecord{fs::path(name).filename().string(), csv ? "csv" : "json",
+                                       count.instances, kVegetationZoom, count.tiles};
+  return base::Ok{};
+}
+
 /// Evaluates (and with --erode erodes) and writes every file (temporaries in `outputs`,
 /// committed by the caller).
 base::Status writeFiles(const Options& o, const construction::World& world,
@@ -433,8 +476,12 @@ base::Status writeFiles(const Options& o, const construction::World& world,
                               encodeFile(o, whole, g.size, g.size, lo, hi));
     outputs.push_back(std::make_unique<TemporaryOutput>(o.output));
     STRAHLER_RETURN_IF_ERROR(writeBytes(*outputs.back(), bytes, o.output));
-    return o.splat ? writeSplat(o, world, g, whole, sediment, extent, outputs, progress)
-                   : base::Status(base::Ok{});
+    if (o.splat)
+      STRAHLER_RETURN_IF_ERROR(writeSplat(o, world, g, whole, sediment, extent, outputs, progress));
+    if (o.vegetation)
+      STRAHLER_RETURN_IF_ERROR(
+          writePlants(o, world, evaluator, g, whole, extent, outputs, progress));
+    return base::Ok{};
   }
   const int sideX = (g.size - 1) / o.tilesX, sideY = (g.size - 1) / o.tilesY;
   for (int ty = 0; ty < o.tilesY; ++ty) {
@@ -573,10 +620,11 @@ int exportHeightmap(const Options& o, construction::WorldData data) {
 } // namespace
 
 int runExportHeightmap(const std::vector<std::string>& raw) {
-  auto parsed = CliArgs::parse("export-heightmap", raw,
-                               {"--engine", "--format", "--size", "--bbox", "--local", "--tiles",
-                                "--threads", "-o", "--erode", "--iterations", "--talus"},
-                               {"--help", "-h", "--quiet", "--splat"});
+  auto parsed =
+      CliArgs::parse("export-heightmap", raw,
+                     {"--engine", "--format", "--size", "--bbox", "--local", "--tiles", "--threads",
+                      "-o", "--erode", "--iterations", "--talus", "--vegetation"},
+                     {"--help", "-h", "--quiet", "--splat"});
   if (!parsed)
     return usageError(parsed.error(), kUsage);
   const CliArgs& args = parsed.value();
