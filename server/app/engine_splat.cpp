@@ -146,23 +146,21 @@ std::array<std::uint8_t, kSplatLayerCount> splatWeights(const SplatScores& score
   return out;
 }
 
-base::Status checkSplat(Engine engine, int size, bool tiled) {
-  if (tiled)
-    return makeError(ErrorCode::kInvalidInput,
-                     "--splat with --tiles: tiled weight maps are not written; export the whole "
-                     "landscape (no --tiles) for its weight maps");
-  const int side = engine == Engine::kUnity ? size - 1 : size;
+base::Status checkSplat(Engine engine, int size, int tilesX, int tilesY) {
+  const int side =
+      engine == Engine::kUnity ? size - 1 : std::max((size - 1) / tilesX, (size - 1) / tilesY) + 1;
   if (side > kMaxPngSide)
     return makeError(ErrorCode::kInvalidInput,
                      "--splat --size " + std::to_string(size) +
                          ": the weight PNGs hold at most 4096 samples per side (--size 4096 or "
-                         "less; Unity's 4097 gives 4096² alphamaps)");
+                         "less, or Unreal --tiles; Unity's 4097 gives 4096² alphamaps)");
   return base::Ok{};
 }
 
 base::Result<std::vector<SplatFile>> renderSplat(const construction::World& world, Engine engine,
                                                  const SplatGrid& g, int threads,
-                                                 std::atomic<long long>& rowsDone) {
+                                                 std::atomic<long long>& rowsDone, int tilesX,
+                                                 int tilesY) {
   const tiling::WaterMask water(world, geometry::LocalProjection(world.data().projectionCenter.x,
                                                                  world.data().projectionCenter.y));
   ScoringContext context{world, water, {}};
@@ -208,12 +206,28 @@ base::Result<std::vector<SplatFile>> renderSplat(const construction::World& worl
     }
     rowsDone.fetch_add(r1 - r0);
   });
+  const int sideX = (n - 1) / tilesX, sideY = (n - 1) / tilesY;
+  const bool tiled = tilesX > 1 || tilesY > 1;
   for (int k = 0; k < kSplatLayerCount; ++k) {
-    STRAHLER_ASSIGN_OR_RETURN(
-        std::string bytes, encoding::encodeGrey8Png(layerBytes[static_cast<std::size_t>(k)], n, n));
-    files.push_back(
-        {std::string("_splat_") + kSplatLayerNames[static_cast<std::size_t>(k)] + ".png",
-         std::move(bytes)});
+    const std::vector<std::uint8_t>& layer = layerBytes[static_cast<std::size_t>(k)];
+    const std::string name = std::string("_splat_") + kSplatLayerNames[static_cast<std::size_t>(k)];
+    if (!tiled) {
+      STRAHLER_ASSIGN_OR_RETURN(std::string bytes, encoding::encodeGrey8Png(layer, n, n));
+      files.push_back({name + ".png", std::move(bytes)});
+      continue;
+    }
+    for (int ty = 0; ty < tilesY; ++ty)
+      for (int tx = 0; tx < tilesX; ++tx) { // the heightmap's tiles: shared edge samples
+        std::vector<std::uint8_t> tile;
+        tile.reserve(static_cast<std::size_t>(sideX + 1) * static_cast<std::size_t>(sideY + 1));
+        for (int r = ty * sideY; r <= ty * sideY + sideY; ++r)
+          for (int c = tx * sideX; c <= tx * sideX + sideX; ++c)
+            tile.push_back(layer[static_cast<std::size_t>(r) * n + c]);
+        STRAHLER_ASSIGN_OR_RETURN(std::string bytes,
+                                  encoding::encodeGrey8Png(tile, sideX + 1, sideY + 1));
+        files.push_back({name + "_x" + std::to_string(tx) + "_y" + std::to_string(ty) + ".png",
+                         std::move(bytes)});
+      }
   }
   return files;
 }

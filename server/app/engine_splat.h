@@ -55,16 +55,20 @@ struct SplatFile {
   std::string bytes;  ///< The PNG.
 };
 
-/// kInvalidInput when `engine`'s splat files cannot be written for a size × size export
-/// (Unity alphamaps: (size − 1)² ≤ 4096²; the others' weight PNGs: size ≤ 4096; no --tiles).
-base::Status checkSplat(Engine engine, int size, bool tiled);
+/// kInvalidInput when `engine`'s splat files cannot be written for a size × size export cut in
+/// tilesX × tilesY tiles (Unity alphamaps: (size − 1)² ≤ 4096²; the others' weight PNGs: a
+/// tile's side ≤ 4096).
+base::Status checkSplat(Engine engine, int size, int tilesX, int tilesY);
 
 /// The splat files of `engine`, row 0 north: Unity two RGBA alphamaps of (size − 1)² texels
 /// (Ground, Rock, Sediment, Vegetation; Water, 0, 0, 0), each texel the mean of its four
-/// corner samples' scores; the others one 8-bit grey PNG per layer at size × size. Every
-/// pixel's weights sum to 255. Same bytes for any `threads`; `rowsDone` counts sample rows.
+/// corner samples' scores; the others one 8-bit grey PNG per layer at size × size, or with
+/// tilesX × tilesY > 1 (Unreal's --tiles) one per layer and tile, cut as the heightmap's tiles
+/// (suffix _splat_LAYER_x{A}_y{B}.png). Every pixel's weights sum to 255. Same bytes for any
+/// `threads`; `rowsDone` counts sample rows.
 base::Result<std::vector<SplatFile>> renderSplat(const construction::World& world, Engine engine,
                                                  const SplatGrid& grid, int threads,
-                                                 std::atomic<long long>& rowsDone);
+                                                 std::atomic<long long>& rowsDone, int tilesX = 1,
+                                                 int tilesY = 1);
 
 } // namespace strahler::app

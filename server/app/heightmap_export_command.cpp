@@ -68,14 +68,16 @@ constexpr const char* kUsage =
     "is eroded, then cut into tiles. The sidecar's \"erosion\" records the parameters.\n"
     "--splat also writes layer weights (Ground, Rock, Sediment, Vegetation, Water; 8-bit, summing\n"
     "to 255 per pixel, row 0 north): Unity STEM_alphamap0.png (RGBA: the first four) and\n"
-    "STEM_alphamap1.png (R: Water), (N-1)² texels; the others STEM_splat_LAYER.png, N² pixels.\n"
+    "STEM_alphamap1.png (R: Water), (N-1)² texels; the others STEM_splat_LAYER.png, N² pixels\n"
+    "(Unreal --tiles: STEM_splat_LAYER_x{A}_y{B}.png, as the heightmap's tiles).\n"
     "Sediment is the erosion's with --erode, else the served sediment layer's local model.\n"
     "--vegetation writes STEM_vegetation.csv|json: the plants the vegetation tiles serve (zoom "
     "17)\n"
     "in the box, standing on this heightmap: id, species, x, y, z, radius, scale, yaw. Unity\n"
     "metres x east, y up, z north from the south-west corner; Unreal centimetres X east, Y\n"
     "south, Z up from the north-west corner; Godot metres x east, y up, z south from the\n"
-    "north-west corner; raw local metres. Written a row of tiles at a time. Not with --tiles.\n";
+    "north-west corner; raw local metres. Written a row of tiles at a time. With --tiles, the\n"
+    "splat maps are tiled as the heightmap, and --splat or --vegetation keep the whole grid.\n";
 
 /// What the command line asked for.
 struct Options {
@@ -175,13 +177,9 @@ base::Result<Options> parseOptions(const CliArgs& args) {
   o.splat = args.has("--splat");
   if (const auto vegetation = args.get("--vegetation")) {
     STRAHLER_ASSIGN_OR_RETURN(o.vegetation, parseVegetationFormat(*vegetation));
-    if (o.tilesX > 1 || o.tilesY > 1)
-      return makeError(ErrorCode::kInvalidInput,
-                       "--vegetation with --tiles: the plants stand on the whole heightmap; "
-                       "export it without --tiles");
   }
   if (o.splat)
-    STRAHLER_RETURN_IF_ERROR(checkSplat(o.engine, o.size, o.tilesX > 1 || o.tilesY > 1));
+    STRAHLER_RETURN_IF_ERROR(checkSplat(o.engine, o.size, o.tilesX, o.tilesY));
   if (o.erosion && o.size > kMaxErosionSize)
     STRAHLER_RETURN_IF_ERROR(checkErosionGrid(o.size, 1, 1));
   STRAHLER_ASSIGN_OR_RETURN(const auto threads, args.getInt("--threads", 1, 256));
@@ -385,7 +383,7 @@ base::Status writeSplat(const Options& o, const construction::World& world, cons
   STRAHLER_ASSIGN_OR_RETURN(const std::vector<SplatFile> files,
                             renderSplat(world, o.engine,
                                         SplatGrid{g.box, g.size, heights, sediment}, o.threads,
-                                        progress.done));
+                                        progress.done, o.tilesX, o.tilesY));
   if (caughtSignal() != 0)
     return makeError(ErrorCode::kInternal, "interrupted");
   SplatRecord record;
@@ -395,6 +393,9 @@ base::Status writeSplat(const Options& o, const construction::World& world, cons
   record.layout = o.engine == Engine::kUnity
                       ? "Unity alphamaps: alphamap0 RGBA = Ground, Rock, Sediment, Vegetation; "
                         "alphamap1 R = Water (G, B, A 0); texel = mean of its 4 corner samples"
+                  : o.tilesX > 1 || o.tilesY > 1
+                      ? "one 8-bit grey PNG per layer and tile (STEM_splat_LAYER_x{A}_y{B}.png), "
+                        "one pixel per heightmap sample, cut as the heightmap's tiles"
                       : "one 8-bit grey PNG per layer, one pixel per heightmap sample";
   record.sediment = sediment.empty() ? "proxy: the served sediment layer's local model "
                                        "(layers::sedimentThickness), no --erode"
@@ -449,26 +450,28 @@ base::Status writeFiles(const Options& o, const construction::World& world,
   std::vector<float> whole, sediment;
   if (o.erosion) {
     STRAHLER_ASSIGN_OR_RETURN(whole, erodedGrid(o, evaluator, g, extent, progress, sediment));
-    const auto [mn, mx] = std::minmax_element(whole.begin(), whole.end());
-    lo = *mn, hi = *mx;
-  } else {
-    // Heights' range first: the whole grid in memory, or (tiled) streamed a tile row at a time.
-    progress.total.store(tiled ? 2LL * (o.size + o.tilesY - 1) : o.size);
-    const int band = tiled ? (g.size - 1) / o.tilesY + 1 : g.size;
-    for (int r0 = 0; r0 < g.size - 1 || r0 == 0; r0 += band - 1) {
+  } else if (!tiled || o.splat || o.vegetation) { // the whole grid: splat and plants read it
+    progress.total.store(o.size);
+    whole = evaluateBlock(evaluator, g, 0, g.size, 0, g.size, o.threads, progress.done);
+    if (caughtSignal() != 0)
+      return makeError(ErrorCode::kInternal, "interrupted");
+  } else { // tiled: the heights' range first, streamed a tile row at a time
+    progress.total.store(2LL * (o.size + o.tilesY - 1));
+    const int band = (g.size - 1) / o.tilesY + 1;
+    for (int r0 = 0; r0 < g.size - 1; r0 += band - 1) {
       const int r1 = std::min(g.size, r0 + band);
-      std::vector<float> h =
+      const std::vector<float> h =
           evaluateBlock(evaluator, g, r0, r1, 0, g.size, o.threads, progress.done);
       if (caughtSignal() != 0)
         return makeError(ErrorCode::kInternal, "interrupted");
       const auto [mn, mx] = std::minmax_element(h.begin(), h.end());
       lo = std::min(lo, static_cast<double>(*mn));
       hi = std::max(hi, static_cast<double>(*mx));
-      if (!tiled)
-        whole = std::move(h);
-      if (r1 == g.size)
-        break;
     }
+  }
+  if (!whole.empty()) {
+    const auto [mn, mx] = std::minmax_element(whole.begin(), whole.end());
+    lo = *mn, hi = *mx;
   }
   extent.minHeight = lo, extent.maxHeight = hi;
   if (!tiled) {
@@ -476,15 +479,9 @@ base::Status writeFiles(const Options& o, const construction::World& world,
                               encodeFile(o, whole, g.size, g.size, lo, hi));
     outputs.push_back(std::make_unique<TemporaryOutput>(o.output));
     STRAHLER_RETURN_IF_ERROR(writeBytes(*outputs.back(), bytes, o.output));
-    if (o.splat)
-      STRAHLER_RETURN_IF_ERROR(writeSplat(o, world, g, whole, sediment, extent, outputs, progress));
-    if (o.vegetation)
-      STRAHLER_RETURN_IF_ERROR(
-          writePlants(o, world, evaluator, g, whole, extent, outputs, progress));
-    return base::Ok{};
   }
   const int sideX = (g.size - 1) / o.tilesX, sideY = (g.size - 1) / o.tilesY;
-  for (int ty = 0; ty < o.tilesY; ++ty) {
+  for (int ty = 0; tiled && ty < o.tilesY; ++ty) {
     std::vector<float> rows; // the tile row's samples, unless the whole grid is in memory
     if (whole.empty()) {
       rows = evaluateBlock(evaluator, g, ty * sideY, ty * sideY + sideY + 1, 0, g.size, o.threads,
@@ -503,6 +500,10 @@ base::Status writeFiles(const Options& o, const construction::World& world,
       STRAHLER_RETURN_IF_ERROR(writeBytes(*outputs.back(), bytes, name));
     }
   }
+  if (o.splat)
+    STRAHLER_RETURN_IF_ERROR(writeSplat(o, world, g, whole, sediment, extent, outputs, progress));
+  if (o.vegetation)
+    STRAHLER_RETURN_IF_ERROR(writePlants(o, world, evaluator, g, whole, extent, outputs, progress));
   return base::Ok{};
 }
 

@@ -162,17 +162,47 @@ TEST(ExportHeightmapSplat, UsesTheErosionsSedimentWithErode) {
             100);
 }
 
+TEST(ExportHeightmapSplat, UnrealTilesAreCutFromTheWholeWeightMaps) {
+  const fs::path dir = outputDir("splat-tiles");
+  const std::string common = "export-heightmap " + islandWorld().string() +
+                             " --engine unreal --format r16 --size 253 --splat --quiet -o ";
+  ASSERT_EQ(strahler(common + (dir / "whole.r16").string()).exitCode, 0);
+  const ProcessRun run = strahler(common + (dir / "t.r16").string() + " --tiles 2x2");
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const nlohmann::json side = readSidecar(dir / "t.json");
+  EXPECT_EQ(side["splat"]["files"].size(), 5u * 4u);
+  for (const char* layer : strahler::app::kSplatLayerNames) {
+    int w = 0, h = 0;
+    const auto whole = readPng8(dir / (std::string("whole_splat_") + layer + ".png"), 1, w, h);
+    for (int ty = 0; ty < 2; ++ty)
+      for (int tx = 0; tx < 2; ++tx) {
+        const std::string name = std::string("t_splat_") + layer + "_x" + std::to_string(tx) +
+                                 "_y" + std::to_string(ty) + ".png";
+        const auto tile = readPng8(dir / name, 1, w, h);
+        ASSERT_EQ(w, 127) << name;
+        ASSERT_EQ(h, 127) << name;
+        for (int r = 0; r < 127; ++r)
+          for (int c = 0; c < 127; ++c)
+            ASSERT_EQ(tile[static_cast<std::size_t>(r) * 127 + c],
+                      whole[static_cast<std::size_t>(ty * 126 + r) * 253 + tx * 126 + c])
+                << name << " row " << r << " column " << c;
+      }
+  }
+  // The tiled heightmap itself is unchanged by --splat (the whole grid, then cut).
+  EXPECT_EQ(readR16(dir / "t_x1_y1.r16").size(), 127u * 127u);
+}
+
 TEST(ExportHeightmapSplat, RefusesWhatItCannotWrite) {
   const fs::path dir = outputDir("splat-refused");
-  const std::string out = " -o " + (dir / "h.png").string();
-  const ProcessRun tiled = strahler("export-heightmap " + islandWorld().string() +
-                                    " --engine unreal --size 505 --tiles 2x2 --splat" + out);
-  EXPECT_EQ(tiled.exitCode, 2);
-  EXPECT_NE(tiled.err.find("--splat with --tiles"), std::string::npos) << tiled.err;
-  const ProcessRun big = strahler("export-heightmap " + islandWorld().string() +
-                                  " --engine raw --size 4097 --splat" + out);
+  const std::string world = "export-heightmap " + islandWorld().string();
+  const ProcessRun big =
+      strahler(world + " --engine raw --size 4097 --splat -o " + (dir / "h.r16").string());
   EXPECT_EQ(big.exitCode, 2);
   EXPECT_NE(big.err.find("at most 4096 samples per side"), std::string::npos) << big.err;
+  const ProcessRun untiled = strahler(
+      world + " --engine unreal --format r16 --size 8129 --splat -o " + (dir / "h.r16").string());
+  EXPECT_EQ(untiled.exitCode, 2);
+  EXPECT_NE(untiled.err.find("or Unreal --tiles"), std::string::npos) << untiled.err;
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
