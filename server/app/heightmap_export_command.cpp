@@ -71,13 +71,12 @@ constexpr const char* kUsage =
     "STEM_alphamap1.png (R: Water), (N-1)² texels; the others STEM_splat_LAYER.png, N² pixels\n"
     "(Unreal --tiles: STEM_splat_LAYER_x{A}_y{B}.png, as the heightmap's tiles).\n"
     "Sediment is the erosion's with --erode, else the served sediment layer's local model.\n"
-    "--vegetation writes STEM_vegetation.csv|json: the plants the vegetation tiles serve (zoom "
-    "17)\n"
-    "in the box, standing on this heightmap: id, species, x, y, z, radius, scale, yaw. Unity\n"
-    "metres x east, y up, z north from the south-west corner; Unreal centimetres X east, Y\n"
-    "south, Z up from the north-west corner; Godot metres x east, y up, z south from the\n"
-    "north-west corner; raw local metres. Written a row of tiles at a time. With --tiles, the\n"
-    "splat maps are tiled as the heightmap, and --splat or --vegetation keep the whole grid.\n";
+    "--vegetation writes STEM_vegetation.csv|json: the plants the vegetation tiles serve\n"
+    "(zoom 17) in the box, standing on this heightmap: id, species, x, y, z, radius, scale,\n"
+    "yaw. Unity metres x east, y up, z north from the south-west corner; Unreal centimetres\n"
+    "X east, Y south, Z up from the north-west corner; Godot metres x east, y up, z south from\n"
+    "the north-west corner; raw local metres. Written a row of tiles at a time. With --tiles,\n"
+    "the splat maps are tiled as the heightmap, and --splat or --vegetation keep the whole grid.\n";
 
 /// What the command line asked for.
 struct Options {
@@ -321,12 +320,15 @@ void watchProgress(TerminalProgress& progress, const ExportProgress& state,
     if (fraction <= 0)
       continue;
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-    progress.update(stage == ExportProgress::kRows    ? "export-heightmap"
-                    : stage == ExportProgress::kSplat ? "splat maps"
-                                                      : "erosion",
-                    std::min(fraction, 1.0),
-                    std::to_string(done) + "/" + std::to_string(total) +
-                        (stage == ExportProgress::kRounds ? " rounds" : " rows") + ", ETA " +
+    const char* what = stage == ExportProgress::kRows     ? "export-heightmap"
+                       : stage == ExportProgress::kSplat  ? "splat maps"
+                       : stage == ExportProgress::kPlants ? "vegetation"
+                                                          : "erosion";
+    const char* unit = stage == ExportProgress::kRounds   ? " rounds"
+                       : stage == ExportProgress::kPlants ? " tile rows"
+                                                          : " rows";
+    progress.update(what, std::min(fraction, 1.0),
+                    std::to_string(done) + "/" + std::to_string(total) + unit + ", ETA " +
                         formatSeconds(elapsed / fraction * (1.0 - fraction)));
   }
 }
