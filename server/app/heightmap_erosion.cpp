@@ -1,6 +1,7 @@
 #include "heightmap_erosion.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 namespace strahler::app {
@@ -55,19 +56,22 @@ base::Result<std::optional<erosion::Params>> parseErosion(const CliArgs& args) {
   return std::optional<erosion::Params>(p);
 }
 
-base::Status checkErosionGrid(int size, double dx, double dy) {
+base::Status checkErosionGrid(int size, const geometry::Aabb& box) {
   if (size > kMaxErosionSize)
     return makeError(ErrorCode::kInvalidInput,
                      "--erode --size " + std::to_string(size) +
                          ": the erosion holds the whole grid (about 72 bytes per sample), so "
                          "it takes at most " +
                          std::to_string(kMaxErosionSize) + " samples per side (1.2 GB)");
+  const double dx = box.size().x / (size - 1), dy = box.size().y / (size - 1);
   if (std::abs(dx - dy) > kErosionSquareTolerance * std::max(dx, dy)) {
-    char text[200];
+    const double half = std::max(box.size().x, box.size().y) / 2;
+    const geometry::Vec2 c{(box.min.x + box.max.x) / 2, (box.min.y + box.max.y) / 2};
+    char text[300];
     std::snprintf(text, sizeof text,
                   "--erode: the erosion needs square cells, and this box gives %.2f × %.2f m; "
-                  "give a square --local (or a --bbox about as tall as wide, in metres)",
-                  dx, dy);
+                  "give a square box, e.g. --local %.0f,%.0f,%.0f,%.0f (the square around it)",
+                  dx, dy, c.x - half, c.y - half, c.x + half, c.y + half);
     return makeError(ErrorCode::kInvalidInput, text);
   }
   return base::Ok{};

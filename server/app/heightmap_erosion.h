@@ -8,6 +8,7 @@
 
 #include "strahler/base/result.h"
 #include "strahler/erosion/erosion.h"
+#include "strahler/geometry/aabb.h"
 
 #include <optional>
 #include <string>
@@ -28,9 +29,10 @@ inline constexpr double kErosionSquareTolerance = 0.01;
 /// outside (0, 90), or --iterations / --talus without --erode.
 base::Result<std::optional<erosion::Params>> parseErosion(const CliArgs& args);
 
-/// kInvalidInput when a size × size grid of dx × dy m cells cannot be eroded: a side above
-/// kMaxErosionSize, or cells not square within kErosionSquareTolerance.
-base::Status checkErosionGrid(int size, double dx, double dy);
+/// kInvalidInput when a size × size grid over `box` (local metres) cannot be eroded: a side
+/// above kMaxErosionSize, or cells not square within kErosionSquareTolerance (the message
+/// proposes the square --local around the box's centre that holds it).
+base::Status checkErosionGrid(int size, const geometry::Aabb& box);
 
 /// "thermal", "hydraulic" or "thermal,hydraulic".
 std::string erosionProcesses(const erosion::Params& params);

@@ -179,8 +179,8 @@ base::Result<Options> parseOptions(const CliArgs& args) {
   }
   if (o.splat)
     STRAHLER_RETURN_IF_ERROR(checkSplat(o.engine, o.size, o.tilesX, o.tilesY));
-  if (o.erosion && o.size > kMaxErosionSize)
-    STRAHLER_RETURN_IF_ERROR(checkErosionGrid(o.size, 1, 1));
+  if (o.erosion && o.size > kMaxErosionSize) // before loading the world
+    STRAHLER_RETURN_IF_ERROR(checkErosionGrid(o.size, geometry::Aabb{{0, 0}, {1, 1}}));
   STRAHLER_ASSIGN_OR_RETURN(const auto threads, args.getInt("--threads", 1, 256));
   o.threads = static_cast<int>(
       threads.value_or(static_cast<long long>(std::max(1u, std::thread::hardware_concurrency()))));
@@ -552,7 +552,7 @@ int exportHeightmap(const Options& o, construction::WorldData data) {
   ExportGrid g{box.value(), o.size, box.value().size().x / (o.size - 1),
                box.value().size().y / (o.size - 1)};
   if (o.erosion)
-    if (auto square = checkErosionGrid(o.size, g.dx, g.dy); !square)
+    if (auto square = checkErosionGrid(o.size, g.box); !square)
       return usageError(square.error(), kUsage);
   HeightmapExtent extent;
   extent.x0 = g.box.min.x, extent.y0 = g.box.min.y, extent.x1 = g.box.max.x,

@@ -168,7 +168,9 @@ TEST(ExportHeightmapErosion, RefusesBadParametersWithAPreciseMessageAndWritesNot
       {"--iterations 5", "--iterations needs --erode"},
       {"--talus 30", "--talus needs --erode"},
       {"--size 8193 --erode thermal", "at most 4097 samples per side"},
-      {"--local -1000,-1000,3000,1000 --erode thermal", "the erosion needs square cells"},
+      {"--local -1000,-1000,3000,1000 --erode thermal",
+       "needs square cells, and this box gives 3.91 × 1.95 m; give a square box, e.g. --local "
+       "-1000,-2000,3000,2000"},
   };
   for (const auto& c : cases) {
     const ProcessRun run =
