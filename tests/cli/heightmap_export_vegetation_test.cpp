@@ -3,17 +3,22 @@
 // on the exported heightmap read back from its file, a box inside another holding exactly its
 // share of the plants, the same bytes for any thread count, and bad input refused.
 #include "heightmap_export_support.h"
+#include "serve_process.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <filesystem>
 #include <map>
 #include <set>
 #include <sstream>
 #include <string>
+#include <sys/wait.h>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -22,6 +27,7 @@ namespace fs = std::filesystem;
 using strahler::test_support::ProcessRun;
 using strahler::test_support::readWholeFile;
 using namespace strahler::test_support::heightmap_export;
+using namespace std::chrono_literals;
 
 ProcessRun strahler(const std::string& args) {
   return runStrahler(args);
@@ -173,6 +179,26 @@ TEST(ExportHeightmapVegetation, TiledUnrealExportsWriteTheSamePlants) {
   ASSERT_EQ(run.exitCode, 0) << run.err;
   EXPECT_EQ(readWholeFile(dir / "t_vegetation.csv"), readWholeFile(dir / "whole_vegetation.csv"));
   EXPECT_TRUE(fs::exists(dir / "t_x1_y1.r16"));
+}
+
+TEST(ExportHeightmapVegetation, SigtermWhilePlacingPlantsLeavesNothing) {
+  const fs::path dir = outputDir("vegetation-interrupt");
+  strahler::test_support::ServeProcess run(
+      {STRAHLER_EXECUTABLE, "export-heightmap", islandWorld().string(), "--engine", "unity",
+       "--local", "-3000,-3000,3000,3000", "--size", "129", "--splat", "--vegetation", "json",
+       "--threads", "1", "--quiet", "-o", (dir / "v.raw").string()},
+      "");
+  ASSERT_GT(run.pid(), 0);
+  const fs::path temporary = dir / ("v_vegetation.json.tmp." + std::to_string(run.pid()));
+  const auto deadline = std::chrono::steady_clock::now() + 120s;
+  while (!fs::exists(temporary) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(5ms);
+  ASSERT_TRUE(fs::exists(temporary)) << "no " << temporary << " within 120 s";
+  ::kill(run.pid(), SIGTERM);
+  const auto status = run.waitUntil(std::chrono::steady_clock::now() + 30s);
+  ASSERT_TRUE(status) << "export still running 30 s after the signal";
+  EXPECT_TRUE(WIFSIGNALED(*status) && WTERMSIG(*status) == SIGTERM) << "wait status " << *status;
+  EXPECT_TRUE(fs::is_empty(dir)) << "left behind after the signal";
 }
 
 TEST(ExportHeightmapVegetation, RefusesBadInput) {
