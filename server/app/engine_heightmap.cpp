@@ -168,6 +168,51 @@ std::string sidecarJson(Engine engine, EngineFormat format, const HeightmapExten
                   {"width", (e.size - 1) / e.tilesX + 1},
                   {"height", (e.size - 1) / e.tilesY + 1},
                   {"names", "STEM_x{column}_y{row}, row 0 north; neighbours share edge samples"}};
+  if (const auto& r = e.erosion)
+    j["erosion"] = {{"model", "seed 004: bedrock + sediment, thermal and hydraulic erosion, "
+                              "talus stabilisation; this export only, served tiles are not eroded"},
+                    {"processes", r->processes},
+                    {"iterations", r->iterations},
+                    {"talusDegrees", r->talusDegrees},
+                    {"thermalRate", r->thermalRate},
+                    {"hydraulicRate", r->hydraulicRate},
+                    {"toleranceM", r->toleranceM},
+                    {"sweepsPerIteration", r->sweepsPerIteration},
+                    {"finalSweeps", r->finalSweeps},
+                    {"stable", r->stable},
+                    {"cellMetres", r->cellMetres},
+                    {"talusExcessM", r->talusExcessM}};
+  if (const auto& sp = e.splat)
+    j["splat"] = {{"layers", sp->layers},
+                  {"files", sp->files},
+                  {"width", sp->width},
+                  {"height", sp->width},
+                  {"row0", "north"},
+                  {"column0", "west"},
+                  {"layout", sp->layout},
+                  {"sediment", sp->sediment},
+                  {"weights", "8-bit; the layers' weights sum to 255 at every pixel"}};
+  if (const auto& v = e.vegetation) {
+    const bool unreal = engine == Engine::kUnreal;
+    const char* axes = engine == Engine::kUnity    ? "x east, y up, z north"
+                       : engine == Engine::kUnreal ? "X east, Y south, Z up"
+                       : engine == Engine::kGodot
+                           ? "x east, y up, z south (-z north)"
+                           : "x east, y north, z up (the world's local frame)";
+    const char* origin = engine == Engine::kUnity ? "the terrain's south-west corner (x0, y0)"
+                         : engine == Engine::kRaw ? "the world's projection centre"
+                                                  : "the heightmap's north-west corner (x0, y1)";
+    j["vegetation"] = {{"file", v->file},
+                       {"format", v->format},
+                       {"count", v->count},
+                       {"units", unreal ? "centimetres" : "metres"},
+                       {"axes", axes},
+                       {"origin", origin},
+                       {"height", "absolute (the sidecar's heights), on the exported heightmap"},
+                       {"columns", "id, species, x, y, z, radius, scale, yaw (radians)"},
+                       {"source", "the vegetation tiles served at zoom " + std::to_string(v->zoom) +
+                                      " (" + std::to_string(v->tiles) + " tiles)"}};
+  }
   switch (engine) {
   case Engine::kUnity:
     j["unity"] = {{"depth", "Bit 16"},

@@ -5,6 +5,7 @@
 #include "strahler/base/result.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,39 @@ const char* formatName(EngineFormat format) noexcept;
 /// gives 0 everywhere).
 std::uint16_t quantize(double height, double minHeight, double maxHeight) noexcept;
 
+/// The erosion an export went through (export-heightmap --erode), for the sidecar.
+struct ErosionRecord {
+  std::string processes;      ///< "thermal", "hydraulic" or "thermal,hydraulic".
+  int iterations = 0;         ///< Rounds.
+  double talusDegrees = 0;    ///< The stabilisation's talus angle.
+  double thermalRate = 0;     ///< m of bedrock weathered per round at I·tanβ = 1.
+  double hydraulicRate = 0;   ///< m carried downhill per round at H·tanβ = 1.
+  double toleranceM = 0;      ///< The final stabilisation's tolerance, m.
+  int sweepsPerIteration = 0; ///< Stabilisation sweeps in each round.
+  int finalSweeps = 0;        ///< Sweeps the final stabilisation took.
+  bool stable = false;        ///< True when the final stabilisation reached toleranceM.
+  double cellMetres = 0;      ///< The erosion's cell size, m.
+  double talusExcessM = 0;    ///< erosion::talusExcess of the result, m (≤ toleranceM).
+};
+
+/// The splat maps an export wrote (export-heightmap --splat), for the sidecar.
+struct SplatRecord {
+  std::vector<std::string> layers; ///< Layer names, in file / channel order.
+  std::vector<std::string> files;  ///< File names (no folder), in order.
+  int width = 0;                   ///< Pixels per side of each file.
+  std::string layout;              ///< How layers map to files and channels.
+  std::string sediment;            ///< Where the sediment layer comes from.
+};
+
+/// The vegetation instances an export wrote (export-heightmap --vegetation), for the sidecar.
+struct VegetationRecord {
+  std::string file;    ///< File name (no folder).
+  std::string format;  ///< "csv" or "json".
+  long long count = 0; ///< Plants written.
+  int zoom = 0;        ///< The Web Mercator zoom of the vegetation tiles they come from.
+  long long tiles = 0; ///< Vegetation tiles placed.
+};
+
 /// What a sidecar states about one export.
 struct HeightmapExtent {
   double west = 0, south = 0, east = 0, north = 0; ///< Degrees (the box's corners' bounds).
@@ -60,6 +94,9 @@ struct HeightmapExtent {
   int size = 0;                                    ///< Samples per side.
   double minHeight = 0, maxHeight = 0;             ///< m.
   int tilesX = 1, tilesY = 1;                      ///< Unreal's --tiles (1 × 1: one file).
+  std::optional<ErosionRecord> erosion;            ///< Set when the export was eroded.
+  std::optional<SplatRecord> splat;                ///< Set when splat maps were written.
+  std::optional<VegetationRecord> vegetation;      ///< Set when instances were written.
 };
 
 /// The sidecar JSON (bounds, metres per pixel, heights, the engine's import numbers).

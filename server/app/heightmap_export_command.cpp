@@ -4,7 +4,10 @@
 #include "cli_args.h"
 #include "command_support.h"
 #include "engine_heightmap.h"
+#include "engine_splat.h"
+#include "engine_vegetation.h"
 #include "export_plan.h"
+#include "heightmap_erosion.h"
 #include "terminal_progress.h"
 #include "world_bounds.h"
 
@@ -40,6 +43,8 @@ constexpr const char* kUsage =
     "usage: strahler export-heightmap WORLD.world --engine unity|unreal|godot|raw -o PATH\n"
     "                       [--bbox W,S,E,N | --local X0,Y0,X1,Y1] [--size N]\n"
     "                       [--format r16|png16|exr|tif] [--tiles AxB] [--threads N] [--quiet]\n"
+    "                       [--erode thermal,hydraulic [--iterations N] [--talus DEG]] [--splat]\n"
+    "                       [--vegetation csv|json]\n"
     "Writes a heightmap of the box (default: the world's land) for a game engine, N × N\n"
     "samples edge to edge, evaluated at the export's own spacing: 16-bit, the box's heights\n"
     "min..max mapped to 0..65535 (exr and tif: float32 metres), and PATH's stem + .json:\n"
@@ -54,7 +59,24 @@ constexpr const char* kUsage =
     "Default N: 1025 (unity, godot, raw), 1009 (unreal). --threads: default all cores; the\n"
     "bytes are the same for any count. Files are written to PATH.tmp.PID and renamed when\n"
     "complete; on an error or SIGINT/SIGTERM nothing is left. Memory: N² × 4 bytes (68 MB at\n"
-    "4097²); with --tiles one row of tiles at a time (heights evaluated twice).\n";
+    "4097²); with --tiles one row of tiles at a time (heights evaluated twice).\n"
+    "--erode runs seed 004's erosion (bedrock + sediment; thermal and/or hydraulic, then talus\n"
+    "stabilisation) on this export's grid, in metres, before quantising. It changes this export\n"
+    "only: served tiles stay stateless and are never eroded. --iterations: rounds, 1..10000\n"
+    "(default 50); --talus: degrees in (0, 90) (default 45). It needs square cells and N <= 4097:\n"
+    "it holds the whole grid, ~72 bytes per sample (1.2 GB at 4097²); with --tiles the whole grid\n"
+    "is eroded, then cut into tiles. The sidecar's \"erosion\" records the parameters.\n"
+    "--splat also writes layer weights (Ground, Rock, Sediment, Vegetation, Water; 8-bit, summing\n"
+    "to 255 per pixel, row 0 north): Unity STEM_alphamap0.png (RGBA: the first four) and\n"
+    "STEM_alphamap1.png (R: Water), (N-1)² texels; the others STEM_splat_LAYER.png, N² pixels\n"
+    "(Unreal --tiles: STEM_splat_LAYER_x{A}_y{B}.png, as the heightmap's tiles).\n"
+    "Sediment is the erosion's with --erode, else the served sediment layer's local model.\n"
+    "--vegetation writes STEM_vegetation.csv|json: the plants the vegetation tiles serve\n"
+    "(zoom 17) in the box, standing on this heightmap: id, species, x, y, z, radius, scale,\n"
+    "yaw. Unity metres x east, y up, z north from the south-west corner; Unreal centimetres\n"
+    "X east, Y south, Z up from the north-west corner; Godot metres x east, y up, z south from\n"
+    "the north-west corner; raw local metres. Written a row of tiles at a time. With --tiles,\n"
+    "the splat maps are tiled as the heightmap, and --splat or --vegetation keep the whole grid.\n";
 
 /// What the command line asked for.
 struct Options {
@@ -67,6 +89,9 @@ struct Options {
   std::optional<geometry::Aabb> local;
   std::string output;
   bool quiet = false;
+  std::optional<erosion::Params> erosion;     ///< --erode's, when given.
+  bool splat = false;                         ///< --splat: weight maps beside the heightmap.
+  std::optional<VegetationFormat> vegetation; ///< --vegetation: the plants' file format.
 };
 
 base::Result<std::vector<double>> parseNumbers(const std::string& option, const std::string& text,
@@ -147,6 +172,15 @@ base::Result<Options> parseOptions(const CliArgs& args) {
     return makeError(ErrorCode::kInvalidInput,
                      "--format png16 holds at most 4096 samples per side here; give --tiles "
                      "(e.g. 2x2) or --format r16");
+  STRAHLER_ASSIGN_OR_RETURN(o.erosion, parseErosion(args));
+  o.splat = args.has("--splat");
+  if (const auto vegetation = args.get("--vegetation")) {
+    STRAHLER_ASSIGN_OR_RETURN(o.vegetation, parseVegetationFormat(*vegetation));
+  }
+  if (o.splat)
+    STRAHLER_RETURN_IF_ERROR(checkSplat(o.engine, o.size, o.tilesX, o.tilesY));
+  if (o.erosion && o.size > kMaxErosionSize) // before loading the world
+    STRAHLER_RETURN_IF_ERROR(checkErosionGrid(o.size, geometry::Aabb{{0, 0}, {1, 1}}));
   STRAHLER_ASSIGN_OR_RETURN(const auto threads, args.getInt("--threads", 1, 256));
   o.threads = static_cast<int>(
       threads.value_or(static_cast<long long>(std::max(1u, std::thread::hardware_concurrency()))));
@@ -259,64 +293,208 @@ std::string tilePath(const Options& o, int x, int y) {
   return stem + "_x" + std::to_string(x) + "_y" + std::to_string(y) + ext;
 }
 
-/// Shows progress with an ETA at most every 200 ms until `finished`.
-void watchProgress(TerminalProgress& progress, const std::atomic<long long>& done, long long total,
+/// What the progress bar shows: rows evaluated, then (with --erode) erosion rounds, then the
+/// final stabilisation's sweeps (whose count is only known at the end: no ETA).
+struct ExportProgress {
+  enum Stage { kRows, kRounds, kSweeps, kSplat, kPlants };
+  std::atomic<int> stage{kRows};
+  std::atomic<long long> done{0};
+  std::atomic<long long> total{1};
+};
+
+/// Shows progress with an ETA per stage at most every 200 ms until `finished`.
+void watchProgress(TerminalProgress& progress, const ExportProgress& state,
                    const std::atomic<bool>& finished) {
-  const auto start = Clock::now();
+  auto start = Clock::now();
+  int stage = state.stage.load();
   while (!finished.load()) {
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
-    const double fraction = static_cast<double>(done.load()) / static_cast<double>(total);
+    if (state.stage.load() != stage)
+      stage = state.stage.load(), start = Clock::now();
+    const long long done = state.done.load(), total = state.total.load();
+    if (stage == ExportProgress::kSweeps) {
+      progress.update("erosion", 1.0, "final stabilisation, sweep " + std::to_string(done));
+      continue;
+    }
+    const double fraction = static_cast<double>(done) / static_cast<double>(total);
     if (fraction <= 0)
       continue;
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-    progress.update("export-heightmap", std::min(fraction, 1.0),
-                    std::to_string(done.load()) + "/" + std::to_string(total) + " rows, ETA " +
+    const char* what = stage == ExportProgress::kRows     ? "export-heightmap"
+                       : stage == ExportProgress::kSplat  ? "splat maps"
+                       : stage == ExportProgress::kPlants ? "vegetation"
+                                                          : "erosion";
+    const char* unit = stage == ExportProgress::kRounds   ? " rounds"
+                       : stage == ExportProgress::kPlants ? " tile rows"
+                                                          : " rows";
+    progress.update(what, std::min(fraction, 1.0),
+                    std::to_string(done) + "/" + std::to_string(total) + unit + ", ETA " +
                         formatSeconds(elapsed / fraction * (1.0 - fraction)));
   }
 }
 
-/// Evaluates and writes every file (temporaries in `outputs`, committed by the caller).
-base::Status writeFiles(const Options& o, const tiling::TileEvaluator& evaluator,
-                        const ExportGrid& g, HeightmapExtent& extent,
+/// The samples of tile (tx, ty) cut from `rows` (whole-width rows starting at the tile's top).
+std::vector<float> cutTile(const std::vector<float>& rows, int width, int firstRow, int column0,
+                           int sideX, int sideY) {
+  std::vector<float> tile;
+  tile.reserve(static_cast<std::size_t>(sideX + 1) * (sideY + 1));
+  for (int r = firstRow; r <= firstRow + sideY; ++r)
+    for (int c = column0; c <= column0 + sideX; ++c)
+      tile.push_back(rows[static_cast<std::size_t>(r) * width + c]);
+  return tile;
+}
+
+/// Evaluates the whole grid and erodes it (--erode): the heights, in metres; the sediment
+/// thickness per sample into `sediment`.
+base::Result<std::vector<float>>
+erodedGrid(const Options& o, const tiling::TileEvaluator& evaluator, const ExportGrid& g,
+           HeightmapExtent& extent, ExportProgress& progress, std::vector<float>& sediment) {
+  std::vector<float> whole =
+      evaluateBlock(evaluator, g, 0, g.size, 0, g.size, o.threads, progress.done);
+  if (caughtSignal() != 0)
+    return makeError(ErrorCode::kInternal, "interrupted");
+  erosion::Params params = *o.erosion;
+  params.threads = o.threads;
+  params.onProgress = [&progress](const erosion::Progress& p) {
+    if (p.finalSweeps == 0) {
+      progress.done.store(p.round);
+    } else {
+      progress.stage.store(ExportProgress::kSweeps);
+      progress.done.store(p.finalSweeps);
+    }
+    return caughtSignal() == 0;
+  };
+  progress.done.store(0);
+  progress.total.store(params.iterations);
+  progress.stage.store(ExportProgress::kRounds);
+  extent.erosion.emplace();
+  STRAHLER_ASSIGN_OR_RETURN(
+      sediment, erodeExportGrid(whole, g.size, std::sqrt(g.dx * g.dy), params, *extent.erosion));
+  return whole;
+}
+
+/// Writes the --splat files of the whole grid `heights` (and the erosion's `sediment`, if any).
+base::Status writeSplat(const Options& o, const construction::World& world, const ExportGrid& g,
+                        const std::vector<float>& heights, const std::vector<float>& sediment,
+                        HeightmapExtent& extent,
                         std::vector<std::unique_ptr<TemporaryOutput>>& outputs,
-                        std::atomic<long long>& done) {
+                        ExportProgress& progress) {
+  progress.done.store(0);
+  progress.total.store(o.engine == Engine::kUnity ? g.size - 1 : g.size);
+  progress.stage.store(ExportProgress::kSplat);
+  STRAHLER_ASSIGN_OR_RETURN(const std::vector<SplatFile> files,
+                            renderSplat(world, o.engine,
+                                        SplatGrid{g.box, g.size, heights, sediment}, o.threads,
+                                        progress.done, o.tilesX, o.tilesY));
+  if (caughtSignal() != 0)
+    return makeError(ErrorCode::kInternal, "interrupted");
+  SplatRecord record;
+  for (const char* name : kSplatLayerNames)
+    record.layers.emplace_back(name);
+  record.width = o.engine == Engine::kUnity ? g.size - 1 : g.size;
+  record.layout = o.engine == Engine::kUnity
+                      ? "Unity alphamaps: alphamap0 RGBA = Ground, Rock, Sediment, Vegetation; "
+                        "alphamap1 R = Water (G, B, A 0); texel = mean of its 4 corner samples"
+                  : o.tilesX > 1 || o.tilesY > 1
+                      ? "one 8-bit grey PNG per layer and tile (STEM_splat_LAYER_x{A}_y{B}.png), "
+                        "one pixel per heightmap sample, cut as the heightmap's tiles"
+                      : "one 8-bit grey PNG per layer, one pixel per heightmap sample";
+  record.sediment = sediment.empty() ? "proxy: the served sediment layer's local model "
+                                       "(layers::sedimentThickness), no --erode"
+                                     : "the erosion's sediment S (--erode)";
+  const std::string stem = splitExtension(o.output).first;
+  for (const SplatFile& file : files) {
+    const std::string name = stem + file.suffix;
+    outputs.push_back(std::make_unique<TemporaryOutput>(name));
+    STRAHLER_RETURN_IF_ERROR(writeBytes(*outputs.back(), file.bytes, name));
+    record.files.push_back(fs::path(name).filename().string());
+  }
+  extent.splat = std::move(record);
+  return base::Ok{};
+}
+
+/// Writes the --vegetation file: the served plants in the box, standing on `heights`.
+base::Status writePlants(const Options& o, const construction::World& world,
+                         const tiling::TileEvaluator& evaluator, const ExportGrid& g,
+                         const std::vector<float>& heights, HeightmapExtent& extent,
+                         std::vector<std::unique_ptr<TemporaryOutput>>& outputs,
+                         ExportProgress& progress) {
+  progress.done.store(0);
+  progress.total.store(1);
+  progress.stage.store(ExportProgress::kPlants);
+  const bool csv = *o.vegetation == VegetationFormat::kCsv;
+  const std::string name =
+      splitExtension(o.output).first + "_vegetation" + (csv ? ".csv" : ".json");
+  outputs.push_back(std::make_unique<TemporaryOutput>(name));
+  std::ofstream out(outputs.back()->path(), std::ios::binary);
+  STRAHLER_ASSIGN_OR_RETURN(const VegetationCount count,
+                            writeVegetation(world, evaluator, o.engine, *o.vegetation,
+                                            VegetationGrid{g.box, g.size, heights}, o.threads, out,
+                                            progress.total, progress.done,
+                                            [] { return caughtSignal() != 0; }));
+  out.close();
+  if (!out)
+    return makeError(ErrorCode::kIoError, "cannot write '" + name + "'");
+  extent.vegetation = VegetationRecord{fs::path(name).filename().string(), csv ? "csv" : "json",
+                                       count.instances, kVegetationZoom, count.tiles};
+  return base::Ok{};
+}
+
+/// Evaluates (and with --erode erodes) and writes every file (temporaries in `outputs`,
+/// committed by the caller).
+base::Status writeFiles(const Options& o, const construction::World& world,
+                        const tiling::TileEvaluator& evaluator, const ExportGrid& g,
+                        HeightmapExtent& extent,
+                        std::vector<std::unique_ptr<TemporaryOutput>>& outputs,
+                        ExportProgress& progress) {
   const bool tiled = o.tilesX > 1 || o.tilesY > 1;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  std::vector<float> whole;
-  // Heights' range first: the whole grid in memory, or (tiled) streamed a tile row at a time.
-  const int band = tiled ? (g.size - 1) / o.tilesY + 1 : g.size;
-  for (int r0 = 0; r0 < g.size - 1 || r0 == 0; r0 += band - 1) {
-    const int r1 = std::min(g.size, r0 + band);
-    std::vector<float> h = evaluateBlock(evaluator, g, r0, r1, 0, g.size, o.threads, done);
+  std::vector<float> whole, sediment;
+  if (o.erosion) {
+    STRAHLER_ASSIGN_OR_RETURN(whole, erodedGrid(o, evaluator, g, extent, progress, sediment));
+  } else if (!tiled || o.splat || o.vegetation) { // the whole grid: splat and plants read it
+    progress.total.store(o.size);
+    whole = evaluateBlock(evaluator, g, 0, g.size, 0, g.size, o.threads, progress.done);
     if (caughtSignal() != 0)
       return makeError(ErrorCode::kInternal, "interrupted");
-    const auto [mn, mx] = std::minmax_element(h.begin(), h.end());
-    lo = std::min(lo, static_cast<double>(*mn));
-    hi = std::max(hi, static_cast<double>(*mx));
-    if (!tiled)
-      whole = std::move(h);
-    if (r1 == g.size)
-      break;
+  } else { // tiled: the heights' range first, streamed a tile row at a time
+    progress.total.store(2LL * (o.size + o.tilesY - 1));
+    const int band = (g.size - 1) / o.tilesY + 1;
+    for (int r0 = 0; r0 < g.size - 1; r0 += band - 1) {
+      const int r1 = std::min(g.size, r0 + band);
+      const std::vector<float> h =
+          evaluateBlock(evaluator, g, r0, r1, 0, g.size, o.threads, progress.done);
+      if (caughtSignal() != 0)
+        return makeError(ErrorCode::kInternal, "interrupted");
+      const auto [mn, mx] = std::minmax_element(h.begin(), h.end());
+      lo = std::min(lo, static_cast<double>(*mn));
+      hi = std::max(hi, static_cast<double>(*mx));
+    }
+  }
+  if (!whole.empty()) {
+    const auto [mn, mx] = std::minmax_element(whole.begin(), whole.end());
+    lo = *mn, hi = *mx;
   }
   extent.minHeight = lo, extent.maxHeight = hi;
   if (!tiled) {
     STRAHLER_ASSIGN_OR_RETURN(const std::string bytes,
                               encodeFile(o, whole, g.size, g.size, lo, hi));
     outputs.push_back(std::make_unique<TemporaryOutput>(o.output));
-    return writeBytes(*outputs.back(), bytes, o.output);
+    STRAHLER_RETURN_IF_ERROR(writeBytes(*outputs.back(), bytes, o.output));
   }
   const int sideX = (g.size - 1) / o.tilesX, sideY = (g.size - 1) / o.tilesY;
-  for (int ty = 0; ty < o.tilesY; ++ty) {
-    const std::vector<float> rows =
-        evaluateBlock(evaluator, g, ty * sideY, ty * sideY + sideY + 1, 0, g.size, o.threads, done);
-    if (caughtSignal() != 0)
-      return makeError(ErrorCode::kInternal, "interrupted");
+  for (int ty = 0; tiled && ty < o.tilesY; ++ty) {
+    std::vector<float> rows; // the tile row's samples, unless the whole grid is in memory
+    if (whole.empty()) {
+      rows = evaluateBlock(evaluator, g, ty * sideY, ty * sideY + sideY + 1, 0, g.size, o.threads,
+                           progress.done);
+      if (caughtSignal() != 0)
+        return makeError(ErrorCode::kInternal, "interrupted");
+    }
     for (int tx = 0; tx < o.tilesX; ++tx) {
-      std::vector<float> tile;
-      tile.reserve(static_cast<std::size_t>(sideX + 1) * (sideY + 1));
-      for (int r = 0; r <= sideY; ++r)
-        for (int c = tx * sideX; c <= tx * sideX + sideX; ++c)
-          tile.push_back(rows[static_cast<std::size_t>(r) * g.size + c]);
+      const std::vector<float> tile =
+          whole.empty() ? cutTile(rows, g.size, 0, tx * sideX, sideX, sideY)
+                        : cutTile(whole, g.size, ty * sideY, tx * sideX, sideX, sideY);
       STRAHLER_ASSIGN_OR_RETURN(const std::string bytes,
                                 encodeFile(o, tile, sideX + 1, sideY + 1, lo, hi));
       const std::string name = tilePath(o, tx, ty);
@@ -324,6 +502,10 @@ base::Status writeFiles(const Options& o, const tiling::TileEvaluator& evaluator
       STRAHLER_RETURN_IF_ERROR(writeBytes(*outputs.back(), bytes, name));
     }
   }
+  if (o.splat)
+    STRAHLER_RETURN_IF_ERROR(writeSplat(o, world, g, whole, sediment, extent, outputs, progress));
+  if (o.vegetation)
+    STRAHLER_RETURN_IF_ERROR(writePlants(o, world, evaluator, g, whole, extent, outputs, progress));
   return base::Ok{};
 }
 
@@ -369,6 +551,9 @@ int exportHeightmap(const Options& o, construction::WorldData data) {
     return usageError(box.error(), kUsage);
   ExportGrid g{box.value(), o.size, box.value().size().x / (o.size - 1),
                box.value().size().y / (o.size - 1)};
+  if (o.erosion)
+    if (auto square = checkErosionGrid(o.size, g.box); !square)
+      return usageError(square.error(), kUsage);
   HeightmapExtent extent;
   extent.x0 = g.box.min.x, extent.y0 = g.box.min.y, extent.x1 = g.box.max.x,
   extent.y1 = g.box.max.y, extent.size = o.size;
@@ -387,18 +572,17 @@ int exportHeightmap(const Options& o, construction::WorldData data) {
   clearCaughtSignal();
   const SignalCatcher catcher;
   std::vector<std::unique_ptr<TemporaryOutput>> outputs;
-  std::atomic<long long> done{0};
-  const bool tiled = o.tilesX > 1 || o.tilesY > 1;
-  const long long total = tiled ? 2LL * (o.size + o.tilesY - 1) : o.size; // rows evaluated
+  ExportProgress state;
+  state.total.store(o.size);
   base::Status status = base::Ok{};
   {
     TerminalProgress progress(o.quiet);
     std::atomic<bool> finished{false};
     std::thread watcher;
     if (progress.enabled())
-      watcher = std::thread([&] { watchProgress(progress, done, total, finished); });
+      watcher = std::thread([&] { watchProgress(progress, state, finished); });
     try {
-      status = writeFiles(o, evaluator, g, extent, outputs, done);
+      status = writeFiles(o, world, evaluator, g, extent, outputs, state);
     } catch (const std::exception& e) { // never leave without removing the temporary files
       status = makeError(ErrorCode::kInternal, std::string("export failed: ") + e.what());
     }
@@ -439,10 +623,11 @@ int exportHeightmap(const Options& o, construction::WorldData data) {
 } // namespace
 
 int runExportHeightmap(const std::vector<std::string>& raw) {
-  auto parsed = CliArgs::parse(
-      "export-heightmap", raw,
-      {"--engine", "--format", "--size", "--bbox", "--local", "--tiles", "--threads", "-o"},
-      {"--help", "-h", "--quiet"});
+  auto parsed =
+      CliArgs::parse("export-heightmap", raw,
+                     {"--engine", "--format", "--size", "--bbox", "--local", "--tiles", "--threads",
+                      "-o", "--erode", "--iterations", "--talus", "--vegetation"},
+                     {"--help", "-h", "--quiet", "--splat"});
   if (!parsed)
     return usageError(parsed.error(), kUsage);
   const CliArgs& args = parsed.value();

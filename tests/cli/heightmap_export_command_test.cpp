@@ -3,6 +3,7 @@
 // Unreal's tiles sharing their edges, the same bytes for any thread count, and bad input
 // refused with exit 2 and nothing written.
 #include "engine_heightmap.h"
+#include "heightmap_export_support.h"
 #include "program_run.h"
 #include "serve_process.h"
 
@@ -30,68 +31,11 @@ namespace {
 namespace fs = std::filesystem;
 using strahler::test_support::ProcessRun;
 using strahler::test_support::readWholeFile;
+using namespace strahler::test_support::heightmap_export;
 using namespace std::chrono_literals;
 
-fs::path scratchDir() {
-  return strahler::test_support::processScratchDir(
-      fs::path(STRAHLER_BINARY_DIR) / "cli_test_scratch", "export-heightmap");
-}
-
 ProcessRun strahler(const std::string& args) {
-  return strahler::test_support::runProgram(STRAHLER_EXECUTABLE, args, scratchDir());
-}
-
-/// The default island as a world file, generated once per test process.
-const fs::path& islandWorld() {
-  static const fs::path path = [] {
-    const fs::path p = scratchDir() / "island.world";
-    const ProcessRun run = strahler("generate --quiet -o " + p.string());
-    EXPECT_EQ(run.exitCode, 0) << run.err;
-    return p;
-  }();
-  return path;
-}
-
-/// An empty folder of its own for one test's outputs.
-fs::path outputDir(const std::string& name) {
-  const fs::path dir = scratchDir() / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-/// 16-bit samples of an r16 file read as little-endian bytes, whatever the host's order.
-std::vector<std::uint16_t> readR16(const fs::path& file) {
-  const std::string bytes = readWholeFile(file);
-  std::vector<std::uint16_t> values(bytes.size() / 2);
-  for (std::size_t i = 0; i < values.size(); ++i)
-    values[i] = static_cast<std::uint16_t>(static_cast<unsigned char>(bytes[2 * i]) |
-                                           static_cast<unsigned char>(bytes[2 * i + 1]) << 8);
-  return values;
-}
-
-/// A 16-bit grey PNG decoded by libspng into host-order samples; sets width and height.
-std::vector<std::uint16_t> readPng16(const fs::path& file, int& width, int& height) {
-  const std::string bytes = readWholeFile(file);
-  spng_ctx* ctx = spng_ctx_new(0);
-  spng_set_png_buffer(ctx, bytes.data(), bytes.size());
-  spng_ihdr ihdr{};
-  EXPECT_EQ(spng_get_ihdr(ctx, &ihdr), 0);
-  EXPECT_EQ(ihdr.bit_depth, 16);
-  EXPECT_EQ(ihdr.color_type, SPNG_COLOR_TYPE_GRAYSCALE);
-  width = static_cast<int>(ihdr.width), height = static_cast<int>(ihdr.height);
-  std::vector<std::uint16_t> values(static_cast<std::size_t>(width) * height);
-  // SPNG_FMT_RAW keeps the file's big-endian order (SPNG_FMT_PNG is host-endian): swap here.
-  std::vector<unsigned char> raw(values.size() * 2);
-  EXPECT_EQ(spng_decode_image(ctx, raw.data(), raw.size(), SPNG_FMT_RAW, 0), 0);
-  spng_ctx_free(ctx);
-  for (std::size_t i = 0; i < values.size(); ++i)
-    values[i] = static_cast<std::uint16_t>(raw[2 * i] << 8 | raw[2 * i + 1]);
-  return values;
-}
-
-nlohmann::json readSidecar(const fs::path& file) {
-  return nlohmann::json::parse(readWholeFile(file));
+  return runStrahler(args);
 }
 
 /// Checks that sample (row, column) of the file, read with the sidecar's row order, holds
@@ -120,12 +64,6 @@ std::pair<int, int> highest(const nlohmann::json& side, const std::vector<std::u
   const auto top = static_cast<int>(std::max_element(v.begin(), v.end()) - v.begin());
   const int fileRow = top / n;
   return {side["row0"] == "south" ? n - 1 - fileRow : fileRow, top % n};
-}
-
-const strahler::construction::World& loadedWorld() {
-  static const strahler::construction::World world(
-      strahler::store::readWorldFile(islandWorld().string()).value());
-  return world;
 }
 
 void expectOrientation(const nlohmann::json& side, const std::vector<std::uint16_t>& v) {

@@ -5,7 +5,9 @@
 // same size and box, so the same 16-bit values with row 0 north. Decodes the PNG with pngjs
 // and the r16 as little-endian bytes, and checks: 16-bit grey, the sidecar's width and height,
 // every sample equal, 0 and 65535 both present (the box's min..max), and the sidecar's Unreal
-// Z scale = range × 100 / 512.
+// Z scale = range × 100 / 512. The Unreal run also writes --splat: its five 8-bit grey weight
+// PNGs at the heightmap's size, and a Unity --splat run its two RGBA alphamaps at (N − 1)²,
+// must sum to 255 at every pixel.
 //
 // Usage: node check_engine_heightmap.mjs <strahler> <world> <scratch folder>. Exits 1 on any
 // mismatch.
@@ -28,7 +30,8 @@ async function main() {
   const png = path.join(dir, "unreal.png");
   const r16 = path.join(dir, "raw.r16");
   for (const [engine, out] of [["unreal", png], ["raw", r16]])
-    execFileSync(program, ["export-heightmap", world, "--engine", engine, "--size", size, "--quiet", "-o", out]);
+    execFileSync(program, ["export-heightmap", world, "--engine", engine, "--size", size, "--quiet", "-o", out,
+                           ...(engine === "unreal" ? ["--splat"] : [])]);
   const PNG = await loadPng();
   const image = PNG.sync.read(fs.readFileSync(png), { skipRescale: true });
   const side = JSON.parse(fs.readFileSync(path.join(dir, "unreal.json"), "utf8"));
@@ -55,6 +58,24 @@ async function main() {
   if (Math.abs(side.unreal.scaleZ - (range * 100) / 512) > 1e-9)
     fail(`Z scale ${side.unreal.scaleZ}, expected ${(range * 100) / 512}`);
   console.log(`OK: ${image.width}x${image.height} 16-bit PNG equals the r16, Z scale ${side.unreal.scaleZ}`);
+  checkSplatSums(PNG, dir, side, image.width, 1);
+  const unity = path.join(dir, "unity.raw");
+  execFileSync(program, ["export-heightmap", world, "--engine", "unity", "--size", "257", "--splat", "--quiet", "-o", unity]);
+  checkSplatSums(PNG, dir, JSON.parse(fs.readFileSync(path.join(dir, "unity.json"), "utf8")), 256, 4);
+}
+
+/** Every pixel of the sidecar's splat files (`channels` weights each) sums to 255. */
+function checkSplatSums(PNG, dir, side, width, channels) {
+  const files = side.splat.files.map((f) => PNG.sync.read(fs.readFileSync(path.join(dir, f))));
+  for (const [i, f] of files.entries())
+    if (f.width !== width || f.height !== width || f.depth !== 8)
+      fail(`${side.splat.files[i]}: ${f.width}x${f.height}, depth ${f.depth}; expected ${width}² 8-bit`);
+  for (let p = 0; p < width * width; ++p) {
+    let sum = 0;
+    for (const f of files) for (let c = 0; c < channels; ++c) sum += f.data[4 * p + c];
+    if (sum !== 255) fail(`${side.splat.files.join(", ")}: pixel ${p} sums to ${sum}`);
+  }
+  console.log(`OK: ${files.length} splat files of ${width}², every pixel's weights sum to 255`);
 }
 
 main();

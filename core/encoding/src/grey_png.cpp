@@ -41,4 +41,13 @@ base::Result<std::string> encodeGrey16Png(const std::vector<std::uint16_t>& samp
   return detail::encodePng(bytes, width, height, detail::PngLayout::kGray16);
 }
 
+base::Result<std::string> encodeRgba8Png(const std::vector<std::uint8_t>& samples, int width,
+                                         int height) {
+  STRAHLER_RETURN_IF_ERROR(checkShape(samples.size() / 4, width, height));
+  if (samples.size() % 4 != 0)
+    return base::makeError(base::ErrorCode::kInvalidInput,
+                           "RGBA picture: the byte count is not a multiple of 4");
+  return detail::encodePng(samples, width, height, detail::PngLayout::kRgba8);
+}
+
 } // namespace strahler::encoding

@@ -22,6 +22,8 @@ std::size_t bytesPerPixel(PngLayout layout) {
   switch (layout) {
   case PngLayout::kRgb8:
     return 3u;
+  case PngLayout::kRgba8:
+    return 4u;
   case PngLayout::kGray8:
     return 1u;
   case PngLayout::kGray16:
@@ -101,8 +103,9 @@ spng_ihdr headerFor(int width, int height, PngLayout layout) {
   header.width = static_cast<std::uint32_t>(width);
   header.height = static_cast<std::uint32_t>(height);
   header.bit_depth = layout == PngLayout::kGray16 ? 16 : 8;
-  header.color_type =
-      layout == PngLayout::kRgb8 ? SPNG_COLOR_TYPE_TRUECOLOR : SPNG_COLOR_TYPE_GRAYSCALE;
+  header.color_type = layout == PngLayout::kRgb8    ? SPNG_COLOR_TYPE_TRUECOLOR
+                      : layout == PngLayout::kRgba8 ? SPNG_COLOR_TYPE_TRUECOLOR_ALPHA
+                                                    : SPNG_COLOR_TYPE_GRAYSCALE;
   return header;
 }
 

@@ -16,6 +16,7 @@ namespace strahler::encoding::detail {
 /// Pixel layouts the heightmap formats use.
 enum class PngLayout {
   kRgb8,   ///< 3 bytes per pixel: R, G, B.
+  kRgba8,  ///< 4 bytes per pixel: R, G, B, A (not premultiplied).
   kGray16, ///< 2 bytes per pixel, big-endian (PNG's own byte order).
   kGray8,  ///< 1 byte per pixel (the layer tiles' 8-bit grey).
 };

@@ -251,6 +251,8 @@ base::Result<Layers> erode(std::span<const double> heights, int width, int heigh
     s.wet = humidityMap(heights, width, height, spacing);
 
   const double tanTalus = std::tan(params.talusDegrees * std::numbers::pi / 180.0);
+  Progress progress{0, params.iterations, 0};
+  const auto report = [&] { return !params.onProgress || params.onProgress(progress); };
   for (int round = 0; round < params.iterations; ++round) {
     if (params.thermal)
       thermalStep(s, params);
@@ -258,11 +260,18 @@ base::Result<Layers> erode(std::span<const double> heights, int width, int heigh
       hydraulicStep(s, params);
     for (int sweep = 0; sweep < params.sweepsPerIteration; ++sweep)
       stabiliseSweep(s, tanTalus);
+    progress.round = round + 1;
+    if (!report())
+      return base::makeError(base::ErrorCode::kInternal, "erosion: cancelled");
   }
   Layers out;
   while (out.finalSweeps < params.maxFinalSweeps) {
     ++out.finalSweeps;
-    if (stabiliseSweep(s, tanTalus) <= params.toleranceM) {
+    const bool stable = stabiliseSweep(s, tanTalus) <= params.toleranceM;
+    progress.finalSweeps = out.finalSweeps;
+    if (!report())
+      return base::makeError(base::ErrorCode::kInternal, "erosion: cancelled");
+    if (stable) {
       out.stable = true;
       break;
     }

@@ -178,5 +178,43 @@ TEST(Erosion, MapsAreInTheUnitRange) {
   EXPECT_LT(wet[peak], 0.2);
 }
 
+TEST(Erosion, ReportsEachRoundAndSweepWithoutChangingTheResult) {
+  const std::vector<double> h = cone();
+  Params p;
+  p.iterations = 5;
+  std::vector<Progress> seen;
+  Params watched = p;
+  watched.onProgress = [&seen](const Progress& progress) {
+    seen.push_back(progress);
+    return true;
+  };
+  auto plain = erode(h, kSize, kSize, kSpacing, p);
+  auto reported = erode(h, kSize, kSize, kSpacing, watched);
+  ASSERT_TRUE(plain.ok() && reported.ok());
+  EXPECT_EQ(reported.value().bedrock, plain.value().bedrock);
+  EXPECT_EQ(reported.value().sediment, plain.value().sediment);
+  ASSERT_EQ(seen.size(), static_cast<std::size_t>(5 + plain.value().finalSweeps));
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(seen[static_cast<std::size_t>(i)].round, i + 1);
+    EXPECT_EQ(seen[static_cast<std::size_t>(i)].rounds, 5);
+    EXPECT_EQ(seen[static_cast<std::size_t>(i)].finalSweeps, 0);
+  }
+  EXPECT_EQ(seen.back().finalSweeps, plain.value().finalSweeps);
+}
+
+TEST(Erosion, StopsWhenTheProgressCallbackSaysSo) {
+  Params p;
+  p.iterations = 50;
+  int calls = 0;
+  p.onProgress = [&calls](const Progress& progress) {
+    ++calls;
+    return progress.round < 3;
+  };
+  auto r = erode(cone(), kSize, kSize, kSpacing, p);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().message, "erosion: cancelled");
+  EXPECT_EQ(calls, 3);
+}
+
 } // namespace
 } // namespace strahler::erosion

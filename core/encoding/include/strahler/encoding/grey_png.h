@@ -20,4 +20,10 @@ base::Result<std::string> encodeGrey8Png(const std::vector<std::uint8_t>& sample
 base::Result<std::string> encodeGrey16Png(const std::vector<std::uint16_t>& samples, int width,
                                           int height);
 
+/// Encodes an 8-bit RGBA picture (`samples`: width · height · 4 bytes R, G, B, A, row-major,
+/// top row first; A is data, not premultiplied) as a PNG with no ancillary chunks (the splat
+/// alphamaps of export-heightmap). Errors as encodeGrey8Png.
+base::Result<std::string> encodeRgba8Png(const std::vector<std::uint8_t>& samples, int width,
+                                         int height);
+
 } // namespace strahler::encoding

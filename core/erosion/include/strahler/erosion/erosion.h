@@ -2,10 +2,19 @@
 
 #include "strahler/base/result.h"
 
+#include <functional>
 #include <span>
 #include <vector>
 
 namespace strahler::erosion {
+
+/// Where an erode() call is: `round` of `rounds` done, then `finalSweeps` of the final
+/// stabilisation (whose count is only known when it ends, at most Params::maxFinalSweeps).
+struct Progress {
+  int round = 0;       ///< Rounds completed.
+  int rounds = 0;      ///< Params::iterations.
+  int finalSweeps = 0; ///< Final stabilisation sweeps completed.
+};
 
 /// The parameters of the seed's two-layer erosion (seed 004, §1.3). One round ("iteration") is
 /// thermal erosion, hydraulic erosion, then `sweepsPerIteration` stabilisation sweeps; after
@@ -22,6 +31,9 @@ struct Params {
   int sweepsPerIteration = 4;  ///< Stabilisation sweeps in each round, ≥ 1.
   int maxFinalSweeps = 100000; ///< Cap on the final stabilisation's sweeps, ≥ 1.
   int threads = 0;             ///< Worker threads; 0 = hardware concurrency. Never changes a byte.
+  /// Called after every round and final sweep when set (never changes a byte); returning
+  /// false stops erode(), which then fails with kInternal "erosion: cancelled".
+  std::function<bool(const Progress&)> onProgress;
 
   static constexpr int kMaxIterations = 10000; ///< The largest accepted `iterations`.
 };
