@@ -548,12 +548,12 @@ int exportHeightmap(const Options& o, construction::WorldData data) {
   const geometry::LocalProjection projection(data.projectionCenter.x, data.projectionCenter.y);
   auto box = exportBox(o, data, projection);
   if (!box)
-    return usageError(box.error(), kUsage);
+    return fail(box.error());
   ExportGrid g{box.value(), o.size, box.value().size().x / (o.size - 1),
                box.value().size().y / (o.size - 1)};
   if (o.erosion)
     if (auto square = checkErosionGrid(o.size, g.box); !square)
-      return usageError(square.error(), kUsage);
+      return fail(square.error());
   HeightmapExtent extent;
   extent.x0 = g.box.min.x, extent.y0 = g.box.min.y, extent.x1 = g.box.max.x,
   extent.y1 = g.box.max.y, extent.size = o.size;
@@ -634,8 +634,8 @@ int runExportHeightmap(const std::vector<std::string>& raw) {
   if (args.has("--help") || args.has("-h"))
     return printUsage(kUsage);
   auto options = parseOptions(args);
-  if (!options)
-    return usageError(options.error(), kUsage);
+  if (!options) // a refused value: exit 1 with its message (2 is for an unparsable line)
+    return fail(options.error());
   if (auto writable = checkWritable(options.value().output); !writable)
     return fail(writable.error());
   auto world = store::readWorldFile(args.positional()[0]);
