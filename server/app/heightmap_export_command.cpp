@@ -63,7 +63,8 @@ constexpr const char* kUsage =
     "--erode runs seed 004's erosion (bedrock + sediment; thermal and/or hydraulic, then talus\n"
     "stabilisation) on this export's grid, in metres, before quantising. It changes this export\n"
     "only: served tiles stay stateless and are never eroded. --iterations: rounds, 1..10000\n"
-    "(default 50); --talus: degrees in (0, 90) (default 45). It needs square cells and N <= 4097:\n"
+    "(default 50); --talus: degrees in (0, 90) (default 45). It needs square cells (the default\n"
+    "box becomes the land's box grown to a square about its centre) and N <= 4097:\n"
     "it holds the whole grid, ~72 bytes per sample (1.2 GB at 4097²); with --tiles the whole grid\n"
     "is eroded, then cut into tiles. The sidecar's \"erosion\" records the parameters.\n"
     "--splat also writes layer weights (Ground, Rock, Sediment, Vegetation, Water; 8-bit, summing\n"
@@ -517,6 +518,11 @@ base::Result<geometry::Aabb> exportBox(const Options& o, const construction::Wor
     for (geometry::Vec2 v : p.outer)
       land.add(v);
   geometry::Aabb box = land;
+  if (o.erosion) { // the erosion wants square cells: the land's box grown to a square
+    const geometry::Vec2 c = land.center();
+    const double half = std::max(land.size().x, land.size().y) / 2;
+    box = geometry::Aabb{{c.x - half, c.y - half}, {c.x + half, c.y + half}};
+  }
   std::string asked;
   if (o.local) {
     box = *o.local;

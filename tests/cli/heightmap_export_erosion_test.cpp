@@ -150,6 +150,28 @@ TEST(ExportHeightmapErosion, TiledUnrealExportIsCutFromTheErodedGridWithAnyThrea
   EXPECT_TRUE(readSidecar(dir / "t1.json").contains("erosion"));
 }
 
+TEST(ExportHeightmapErosion, DefaultBoxIsTheLandsBoxGrownToASquare) {
+  const fs::path dir = outputDir("erosion-default-box");
+  const std::string world = "export-heightmap " + islandWorld().string() + " --engine raw";
+  ASSERT_EQ(strahler(world + " --size 65 --quiet -o " + (dir / "plain.r16").string()).exitCode, 0);
+  const ProcessRun eroded =
+      strahler(world + " --size 65 --erode thermal --iterations 1 --quiet -o " +
+               (dir / "eroded.r16").string());
+  ASSERT_EQ(eroded.exitCode, 0) << eroded.err;
+  const nlohmann::json land = readSidecar(dir / "plain.json")["localBounds"];
+  const nlohmann::json box = readSidecar(dir / "eroded.json")["localBounds"];
+  const double landW = land["x1"].get<double>() - land["x0"].get<double>();
+  const double landH = land["y1"].get<double>() - land["y0"].get<double>();
+  const double side = std::max(landW, landH);
+  EXPECT_NEAR(box["x1"].get<double>() - box["x0"].get<double>(), side, 1e-6);
+  EXPECT_NEAR(box["y1"].get<double>() - box["y0"].get<double>(), side, 1e-6);
+  // The same centre as the land's box, so the square holds all of it.
+  EXPECT_NEAR(box["x0"].get<double>() + box["x1"].get<double>(),
+              land["x0"].get<double>() + land["x1"].get<double>(), 1e-6);
+  EXPECT_NEAR(box["y0"].get<double>() + box["y1"].get<double>(),
+              land["y0"].get<double>() + land["y1"].get<double>(), 1e-6);
+}
+
 TEST(ExportHeightmapErosion, RefusesBadParametersWithAPreciseMessageAndWritesNothing) {
   const fs::path dir = outputDir("erosion-refused");
   const std::string out = " -o " + (dir / "h.r16").string();
