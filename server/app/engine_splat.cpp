@@ -1,5 +1,7 @@
 #include "engine_splat.h"
 
+#include "parallel_chunks.h"
+
 #include "strahler/encoding/grey_png.h"
 #include "strahler/geometry/projection.h"
 #include "strahler/layers/bordered_heights.h"
@@ -13,7 +15,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <thread>
 
 namespace strahler::app {
 namespace {
@@ -92,21 +93,6 @@ std::vector<SplatScores> scoreRows(const ScoringContext& context, const SplatGri
   return out;
 }
 
-/// Runs band(r0, r1) over [0, rows) in kBand-row bands on `threads` threads.
-template <class Band> void forBands(int rows, int threads, Band&& band) {
-  std::atomic<int> next{0};
-  auto work = [&] {
-    for (int r = next.fetch_add(kBand); r < rows; r = next.fetch_add(kBand))
-      band(r, std::min(rows, r + kBand));
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t)
-    pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool)
-    t.join();
-}
-
 } // namespace
 
 SplatScores splatScores(double slopeDeg, double sedimentM, double vegetation, bool water) noexcept {
@@ -173,7 +159,7 @@ base::Result<std::vector<SplatFile>> renderSplat(const construction::World& worl
     std::vector<std::uint8_t> maps[2];
     for (auto& map : maps)
       map.assign(static_cast<std::size_t>(m) * m * 4, 0);
-    forBands(m, threads, [&](int r0, int r1) {
+    forChunks(0, m, kBand, threads, [&](int r0, int r1) {
       const std::vector<SplatScores> scores = scoreRows(context, g, r0, r1 + 1);
       for (int r = 0; r < r1 - r0; ++r)
         for (int c = 0; c < m; ++c) {
@@ -197,7 +183,7 @@ base::Result<std::vector<SplatFile>> renderSplat(const construction::World& worl
   std::vector<std::vector<std::uint8_t>> layerBytes(kSplatLayerCount);
   for (auto& layer : layerBytes)
     layer.assign(static_cast<std::size_t>(n) * n, 0);
-  forBands(n, threads, [&](int r0, int r1) {
+  forChunks(0, n, kBand, threads, [&](int r0, int r1) {
     const std::vector<SplatScores> scores = scoreRows(context, g, r0, r1);
     for (std::size_t i = 0; i < scores.size(); ++i) {
       const auto w = splatWeights(scores[i]);

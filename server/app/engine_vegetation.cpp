@@ -1,6 +1,7 @@
 #include "engine_vegetation.h"
 
 #include "lattice_density.h"
+#include "parallel_chunks.h"
 
 #include "strahler/geometry/projection.h"
 #include "strahler/tiling/tile_scheme.h"
@@ -10,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <thread>
 #include <vector>
 
 namespace strahler::app {
@@ -124,28 +124,19 @@ writeVegetation(const construction::World& world, const tiling::TileEvaluator& e
       return makeError(ErrorCode::kInternal, "interrupted");
     std::vector<std::vector<vegetation::Instance>> row(static_cast<std::size_t>(columns));
     std::vector<base::Status> status(static_cast<std::size_t>(columns), base::Ok{});
-    std::atomic<int> next{0};
-    auto work = [&] {
-      for (int i = next.fetch_add(1); i < columns; i = next.fetch_add(1)) {
-        const vegetation::WebTile tile{kVegetationZoom, x0 + i, y};
-        RenderedTile cost;
-        const LatticeDensity density(context, world, water, tile, cost);
-        auto placed = vegetation::placeWebTile(world.data().params.seed, projection, tile, density);
-        if (!placed) {
-          status[static_cast<std::size_t>(i)] = placed.error();
-          continue;
-        }
-        for (const vegetation::Instance& plant : placed.value())
-          if (g.box.contains(plant.position))
-            row[static_cast<std::size_t>(i)].push_back(plant);
+    forChunks(0, columns, 1, threads, [&](int i, int) {
+      const vegetation::WebTile tile{kVegetationZoom, x0 + i, y};
+      RenderedTile cost;
+      const LatticeDensity density(context, world, water, tile, cost);
+      auto placed = vegetation::placeWebTile(world.data().params.seed, projection, tile, density);
+      if (!placed) {
+        status[static_cast<std::size_t>(i)] = placed.error();
+        return;
       }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t)
-      pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool)
-      t.join();
+      for (const vegetation::Instance& plant : placed.value())
+        if (g.box.contains(plant.position))
+          row[static_cast<std::size_t>(i)].push_back(plant);
+    });
     for (int i = 0; i < columns; ++i) {
       STRAHLER_RETURN_IF_ERROR(status[static_cast<std::size_t>(i)]);
       for (const vegetation::Instance& plant : row[static_cast<std::size_t>(i)]) {

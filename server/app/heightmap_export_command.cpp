@@ -8,6 +8,7 @@
 #include "engine_vegetation.h"
 #include "export_plan.h"
 #include "heightmap_erosion.h"
+#include "parallel_chunks.h"
 #include "terminal_progress.h"
 #include "world_bounds.h"
 
@@ -209,36 +210,26 @@ std::vector<float> evaluateBlock(const tiling::TileEvaluator& evaluator, const E
   std::vector<float> heights(static_cast<std::size_t>(width) * (row1 - row0));
   constexpr int kBand = 8;
   const double spacing = std::min(g.dx, g.dy);
-  std::atomic<int> next{row0};
-  auto work = [&] {
-    for (;;) {
-      const int r = next.fetch_add(kBand);
-      if (r >= row1 || caughtSignal() != 0)
-        return;
-      const int rows = std::min(kBand, row1 - r);
-      tiling::SampleGrid grid;
-      grid.width = width;
-      grid.height = rows;
-      grid.points.reserve(static_cast<std::size_t>(width) * rows);
-      for (int i = 0; i < rows; ++i)
-        for (int c = col0; c < col1; ++c)
-          grid.points.push_back(g.at(r + i, c));
-      for (const geometry::Vec2 p : grid.points)
-        grid.bounds.add(p);
-      grid.rowSpacing.assign(static_cast<std::size_t>(rows), spacing);
-      const std::vector<double> h = evaluator.evaluate(grid);
-      std::transform(h.begin(), h.end(),
-                     heights.begin() + static_cast<std::ptrdiff_t>(r - row0) * width,
-                     [](double v) { return static_cast<float>(v); });
-      done.fetch_add(rows);
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t)
-    pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool)
-    t.join();
+  forChunks(row0, row1, kBand, threads, [&](int r, int end) {
+    if (caughtSignal() != 0)
+      return;
+    const int rows = end - r;
+    tiling::SampleGrid grid;
+    grid.width = width;
+    grid.height = rows;
+    grid.points.reserve(static_cast<std::size_t>(width) * rows);
+    for (int i = 0; i < rows; ++i)
+      for (int c = col0; c < col1; ++c)
+        grid.points.push_back(g.at(r + i, c));
+    for (const geometry::Vec2 p : grid.points)
+      grid.bounds.add(p);
+    grid.rowSpacing.assign(static_cast<std::size_t>(rows), spacing);
+    const std::vector<double> h = evaluator.evaluate(grid);
+    std::transform(h.begin(), h.end(),
+                   heights.begin() + static_cast<std::ptrdiff_t>(r - row0) * width,
+                   [](double v) { return static_cast<float>(v); });
+    done.fetch_add(rows);
+  });
   return heights;
 }
 
