@@ -22,6 +22,7 @@ namespace {
 using geometry::Vec2;
 
 constexpr std::uint64_t kDlaStream = 0x646c61ull;
+constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr double kMinRise = 0.01;          // metres: children are strictly higher
 constexpr double kSlopeRadiusEdges = 3.0;  // κ test radius, in edge lengths
 constexpr double kMaxNodes = 2'000'000.0;  // memory bound on one network (as the grammar's)
@@ -232,17 +233,39 @@ private:
       const RiverNode& parent = network_.nodes[parentId.index()];
       if (near[k].first <= 0.0)
         continue;
-      const Vec2 dir = normalize(p - parent.position);
-      const Vec2 child = parent.position + dir * e();
+      const std::optional<Vec2> dir = childDirection(parentId, normalize(p - parent.position));
+      if (!dir)
+        continue;
+      const Vec2 child = parent.position + *dir * e();
       const double rise =
           e() * relief_.riverSlope(child) * (1.0 + params_.slopeJitter * rng_.uniform(-1.0, 1.0));
       const double z = parent.elevation + std::max(rise, kMinRise);
       if (valid(parentId, child, z)) {
-        addNode(child, z, parentId, dir);
+        addNode(child, z, parentId, *dir);
         return StickOutcome::kStuck;
       }
     }
     return StickOutcome::kDropped;
+  }
+
+  /// The direction of a new edge from `parentId` toward a particle coming from `toward`,
+  /// turned back into the grammar's cone (at most branchAngle + angleJitter from the parent's
+  /// flow direction: no hairpins the river primitives could not follow); none when it would
+  /// run closer than 0.6 branchAngle to the parent's other child (no near-overlapping siblings).
+  std::optional<Vec2> childDirection(NodeId parentId, Vec2 toward) const {
+    const Vec2 flow = directions_[parentId.index()];
+    const double maxTurn = (params_.branchAngle + params_.angleJitter) * kDegree;
+    double turn = std::atan2(cross(flow, toward), dot(flow, toward));
+    turn = std::clamp(turn, -maxTurn, maxTurn);
+    const double flowAngle = std::atan2(flow.y, flow.x);
+    const Vec2 dir = geometry::direction(flowAngle + turn);
+    for (NodeId sibling : network_.nodes[parentId.index()].children) {
+      const Vec2 other = directions_[sibling.index()];
+      if (std::atan2(std::abs(cross(other, dir)), dot(other, dir)) <
+          0.6 * params_.branchAngle * kDegree)
+        return std::nullopt;
+    }
+    return dir;
   }
 
   /// Seed 001's anisotropic sticking: a floor plus a share that grows with the cosine between
@@ -306,10 +329,25 @@ private:
     });
   }
 
+  /// Whether a node other than leaf `i`, its parent and its siblings lies within 1.5 e of it:
+  /// then cutting the leaf leaves no gap in the coverage.
+  bool hasNeighbourBesides(std::size_t i) const {
+    const RiverNode& leaf = network_.nodes[i];
+    geometry::Aabb box;
+    box.add(leaf.position);
+    const double reach = 1.5 * e();
+    return !nodeGrid_.query(box.expanded(reach), [&](std::uint32_t j) {
+      const RiverNode& other = network_.nodes[j];
+      const bool family = j == i || j == leaf.parent.value || other.parent == leaf.parent;
+      return family || distance(other.position, leaf.position) > reach;
+    });
+  }
+
   /// Seed 001's pruning of a saturated aggregate, at its lightest: a leaf hanging off a node of
-  /// Strahler order ≥ 2 (a first-order stream of one edge beside a larger river) is cut, so the
-  /// rivers keep long, slender tributaries instead of a fringe of stubs. Drawn-river chains and
-  /// mouths are kept; nodes are renumbered in order, so parents still come first.
+  /// Strahler order ≥ 2 (a first-order stream of one edge beside a larger river) is cut when
+  /// other rivers pass near its tip, so the rivers keep long, slender tributaries instead of a
+  /// fringe of stubs, and the coverage stays. Drawn-river chains and mouths are kept; nodes are
+  /// renumbered in order, so parents still come first.
   void pruneTwigs() {
     computeStrahlerNumbers(network_);
     std::vector<NodeId> remap(network_.nodes.size());
@@ -319,7 +357,7 @@ private:
       if (!n.children.empty() || !n.parent.valid() || places_[i].river >= 0)
         continue;
       const RiverNode& up = network_.nodes[n.parent.index()];
-      if (up.strahler >= 2 && up.parent.valid())
+      if (up.strahler >= 2 && up.parent.valid() && hasNeighbourBesides(i))
         keep[i] = false;
     }
     RiverNetwork pruned;
