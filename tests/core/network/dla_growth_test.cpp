@@ -1,8 +1,11 @@
+#include "corsica_drawn_features.h"
+#include "result_matchers.h"
 #include "test_worlds.h"
 
 #include "strahler/geometry/distance.h"
 #include "strahler/geometry/polygon_index.h"
 #include "strahler/network/dla_growth.h"
+#include "strahler/network/drawn_rivers.h"
 #include "strahler/network/network_growth.h"
 
 #include <gtest/gtest.h>
@@ -151,6 +154,109 @@ TEST(DlaGrowth, DiffersFromTheGrammarAndBetweenSeeds) {
   for (std::size_t i = 0; !differsFromGrammar && i < grammar.nodes.size(); ++i)
     differsFromGrammar = !(grammar.nodes[i].position == a.network.nodes[i].position);
   EXPECT_TRUE(differsFromGrammar);
+}
+
+TEST(DlaGrowth, GrowsOnlyFromTheUserMouths) {
+  input::WorldSpec spec = test_support::mallorcaSpec();
+  spec.params.grower = input::NetworkGrower::kDla;
+  const geometry::PolygonIndex land(spec.land);
+  const std::vector<MouthSite> placed = test_support::valueOf(placeMouths(spec, land));
+  const std::vector<MouthSite> three(placed.begin(), placed.begin() + 3);
+  const RiverNetwork net = test_support::valueOf(growNetworkDla(spec, land, three));
+  ASSERT_EQ(net.mouths.size(), 3u);
+  for (std::size_t m = 0; m < 3; ++m)
+    EXPECT_EQ(net.node(net.mouths[m].node).position, three[m].position);
+  EXPECT_GT(net.nodes.size(), 200u) << "three trees fill a good part of the island";
+}
+
+TEST(DlaGrowth, KeepsTheDrawnRiversAndRidgesOfCorsica) {
+  input::WorldSpec spec = test_support::corsicaSpec();
+  spec.features = test_support::corsicaDrawnFeatures(spec);
+  const GrownWorld w = growDla(std::move(spec));
+  const input::Params& params = w.spec.params;
+  std::vector<int> riverOf(w.network.nodes.size(), -1);
+  std::vector<DrawnCourse> courses;
+  for (std::size_t r = 0; r < w.spec.features.rivers.size(); ++r) {
+    const auto course = drawnCourse(w.spec.features.rivers[r], *w.land, params);
+    ASSERT_TRUE(course.has_value());
+    courses.push_back(*course);
+    // The chain: from the r-th mouth, the child at each chain point's exact position.
+    NodeId at = w.network.mouths[r].node;
+    riverOf[at.index()] = static_cast<int>(r);
+    for (std::size_t k = 1; k < courses.back().chain.size(); ++k) {
+      NodeId next;
+      for (NodeId c : w.network.node(at).children)
+        if (w.network.node(c).position == courses.back().node(k))
+          next = c;
+      ASSERT_TRUE(next.valid()) << w.spec.features.rivers[r].name << " chain node " << k;
+      at = next;
+      riverOf[at.index()] = static_cast<int>(r);
+    }
+    EXPECT_EQ(w.network.node(at).position, w.spec.features.rivers[r].line.front());
+  }
+  std::size_t checked = 0, ridgeCrossings = 0, tooNear = 0, riverCrossings = 0;
+  for (std::uint32_t i = 0; i < w.network.nodes.size(); ++i) {
+    const RiverNode& n = w.network.nodes[i];
+    if (!n.parent.valid())
+      continue;
+    const geometry::Vec2 a = w.network.node(n.parent).position, b = n.position;
+    for (const input::RidgeFeature& ridge : w.spec.features.ridges)
+      for (std::size_t k = 1; k < ridge.line.size(); ++k)
+        ridgeCrossings += geometry::segmentsIntersect(a, b, ridge.line[k - 1], ridge.line[k]);
+    const int parentRiver = riverOf[n.parent.index()];
+    if (riverOf[i] >= 0 && riverOf[i] == parentRiver)
+      continue; // an edge of a chain
+    ++checked;
+    for (std::size_t r = 0; r < courses.size(); ++r) {
+      const std::vector<geometry::Vec2>& line = courses[r].line;
+      for (std::size_t k = 1; k < line.size(); ++k) {
+        if (parentRiver == int(r))
+          riverCrossings +=
+              geometry::segmentsIntersect(geometry::lerp(a, b, 0.1), b, line[k - 1], line[k]);
+        else
+          tooNear += geometry::segmentSegmentDistance(a, b, line[k - 1], line[k]) <= params.sigma;
+      }
+    }
+  }
+  EXPECT_GT(checked, 3000u);
+  EXPECT_EQ(ridgeCrossings, 0u);
+  EXPECT_EQ(riverCrossings, 0u);
+  EXPECT_EQ(tooNear, 0u);
+}
+
+/// The share of edges on a mountain's slopes (between half its radius and its radius from
+/// `centre`, where the drawn mountainousness rises) whose upstream direction points toward it.
+double shareTowards(const RiverNetwork& net, geometry::Vec2 centre, double radius) {
+  std::size_t near = 0, towards = 0;
+  for (const RiverNode& n : net.nodes) {
+    if (!n.parent.valid())
+      continue;
+    const geometry::Vec2 a = net.node(n.parent).position;
+    const double d = geometry::distance(a, centre);
+    if (d > radius || d < 0.5 * radius)
+      continue;
+    ++near;
+    towards += geometry::dot(n.position - a, centre - a) > 0.0 ? 1 : 0;
+  }
+  return near == 0 ? 0.0 : double(towards) / double(near);
+}
+
+TEST(DlaGrowth, ADrawnMountainSteersTheGrowthTowardIt) {
+  // A drawn mountain raises the mountainousness around it: the preferred directions bend up
+  // its slopes, so more edges near it run toward its summit than without it.
+  input::WorldSpec spec = test_support::mallorcaSpec();
+  const geometry::Vec2 summit{-20000.0, 10000.0}; // in the Serra de Tramuntana's west
+  const double radius = 12000.0;
+  const GrownWorld plain = growDla(spec);
+  input::MountainFeature mountain;
+  mountain.position = summit;
+  mountain.radius = radius;
+  spec.features.mountains.push_back(mountain);
+  const GrownWorld steered = growDla(std::move(spec));
+  ASSERT_TRUE(steered.land->contains(summit));
+  const double before = shareTowards(plain.network, summit, radius);
+  const double after = shareTowards(steered.network, summit, radius);
+  EXPECT_GT(after, before + 0.03) << before << " -> " << after;
 }
 
 } // namespace
