@@ -19,7 +19,9 @@ namespace strahler::network {
 /// - there they stick with a probability that grows with the cosine between the new edge and
 ///   the node's preferred direction (its own flow direction, bent up the gradient of the
 ///   mountainousness m, so a constraint map or drawn mountains steer the growth), and attach as
-///   a child of the nearest node that has fewer than two children, at distance e;
+///   a child of the nearest node that has fewer than two children, at distance e, its direction
+///   turned back into the grammar's cone (at most branchAngle + angleJitter from the node's own
+///   flow direction) and more than 0.6 branchAngle from a sibling's;
 /// - a new edge obeys the grammar's rules (in Ω, more than δ from Γ, more than σ from every
 ///   non-adjacent edge, slopes below κ, clear of ridgelines and drawn rivers); a particle
 ///   whose edge breaks them is dropped;
@@ -27,7 +29,8 @@ namespace strahler::network {
 ///   mouths come with `mouths`;
 /// - growth runs to saturation (bounded: at most 40 particles per expected node, and 4000
 ///   steps per walk), then first-order twigs of a single edge are pruned off nodes of higher
-///   order, which leaves slender branches;
+///   order where another river passes within 1.5 e of their tip, which leaves slender
+///   branches without opening gaps;
 /// - every child is higher than its parent by the ReliefLaw's slope times e; a node's
 ///   priority is its Strahler number.
 /// Deterministic for a given spec (one seeded random stream, single-threaded).
