@@ -63,7 +63,7 @@ public:
         addChain(network_.mouths[i].node, mouths[i].drawnRiver);
     const double expected = landArea / (params_.sigma * params_.edgeLength);
     const auto budget = static_cast<std::size_t>(kParticlesPerNode * expected) + 1000;
-    int failures = 0;
+    int failures = network_.nodes.empty() ? kSaturationFailures : 0; // nothing to stick to
     for (std::size_t particle = 0; particle < budget && failures < kSaturationFailures;
          ++particle) {
       failures = releaseParticle() ? 0 : failures + 1;
@@ -224,7 +224,8 @@ private:
       return StickOutcome::kDropped;
     std::sort(near.begin(), near.end());
     const RiverNode& first = network_.nodes[near[0].second];
-    const Vec2 toward = near[0].first > 0.0 ? normalize(p - first.position) : directions_[0];
+    const Vec2 toward =
+        near[0].first > 0.0 ? normalize(p - first.position) : directions_[near[0].second];
     if (!rng_.chance(stickProbability(near[0].second, toward)))
       return StickOutcome::kRefused;
     const std::size_t tries = std::min<std::size_t>(near.size(), kCandidatesPerStick);

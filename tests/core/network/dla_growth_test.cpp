@@ -169,6 +169,14 @@ TEST(DlaGrowth, GrowsOnlyFromTheUserMouths) {
   EXPECT_GT(net.nodes.size(), 200u) << "three trees fill a good part of the island";
 }
 
+TEST(DlaGrowth, WithoutMouthsGrowsNothingAndFinishes) {
+  const input::WorldSpec spec = test_support::defaultIslandSpec();
+  const geometry::PolygonIndex land(spec.land);
+  const RiverNetwork net = test_support::valueOf(growNetworkDla(spec, land, {}));
+  EXPECT_TRUE(net.nodes.empty());
+  EXPECT_TRUE(net.mouths.empty());
+}
+
 TEST(DlaGrowth, KeepsTheDrawnRiversAndRidgesOfCorsica) {
   input::WorldSpec spec = test_support::corsicaSpec();
   spec.features = test_support::corsicaDrawnFeatures(spec);
