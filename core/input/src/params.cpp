@@ -268,7 +268,8 @@ base::Result<Params> parseParamsUnguarded(std::string_view json, const InputLimi
     } else if (key == "grower") {
       if (!value.is_string())
         return wrongType(key, "a string (\"grammar\" or \"dla\")", value);
-      STRAHLER_ASSIGN_OR_RETURN(params.grower, parseGrower(value.get_ref<const std::string&>()));
+      STRAHLER_ASSIGN_OR_RETURN(params.grower, parseGrower(value.get_ref<const std::string&>()),
+                                "params: 'grower'");
     } else {
       return unknownKey("params: ", key, known);
     }

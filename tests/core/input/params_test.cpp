@@ -280,7 +280,7 @@ TEST(Params, TheGrowerIsInTheCanonicalJsonOnlyWhenNotTheGrammar) {
 
 TEST(Params, AnUnknownGrowerIsRefusedByName) {
   EXPECT_TRUE(failsWith(parseParams(R"({"grower": "lsystem"})"), ErrorCode::kInvalidInput,
-                        "unknown grower 'lsystem': expected \"grammar\""));
+                        "params: 'grower': unknown grower 'lsystem': expected \"grammar\""));
   EXPECT_TRUE(failsWith(parseParams(R"({"grower": 2})"), ErrorCode::kInvalidInput,
                         "params: 'grower' must be a string"));
   EXPECT_EQ(parseGrower("dla").value(), NetworkGrower::kDla);
