@@ -16,6 +16,7 @@
 #include "strahler/store/world_file.h"
 
 #include <cstdio>
+#include <optional>
 
 namespace strahler::app {
 namespace {
@@ -60,7 +61,7 @@ base::Status writeOutputs(const CliArgs& args, const input::WorldSpec& spec,
 const char* generateUsage() noexcept {
   return "usage: strahler generate [--coast FILE.geojson] [--params FILE.json] [--mouths "
          "FILE.geojson]\n"
-         "                         [--features FILE.geojson]\n"
+         "                         [--features FILE.geojson] [--grower grammar|dla]\n"
          "                         [--seed N] [--cache-dir DIR] [-o "
          "OUT.world|OUT.geojson|OUT.png]\n"
          "                         [--image OUT.png] [--image-size PX] [--max-area-km2 N]\n"
@@ -78,15 +79,18 @@ const char* generateUsage() noexcept {
          "--features FILE.geojson: the artist's vector map, GeoJSON Features whose \"kind\" is\n"
          "\"mountain\" (Point; elevation, radius in m), \"ridge\" (LineString; elevation) or\n"
          "\"river\" (LineString from source to mouth on a shore; name). Faults (a river off the\n"
-         "land or crossing another, a mountain in the sea, ...) are refused with exit code 1.\n";
+         "land or crossing another, a mountain in the sea, ...) are refused with exit code 1.\n"
+         "--grower grammar|dla: how the river network grows: the paper's open grammar (default)\n"
+         "or diffusion-limited aggregation (seed 001; docs/growers.md); params.json may set it\n"
+         "as \"grower\". An unknown grower is refused with exit code 1.\n";
 }
 
 int runGenerate(const std::vector<std::string>& rawArgs) {
-  auto parsed =
-      CliArgs::parse("generate", rawArgs,
-                     {"--coast", "--params", "--mouths", "--features", "--seed", "--cache-dir",
-                      "-o", "--image", "--image-size", kMaxAreaOption, kMaxExtentOption},
-                     {"--json", "--quiet", "--repair", "--help", "-h"});
+  auto parsed = CliArgs::parse("generate", rawArgs,
+                               {"--coast", "--params", "--mouths", "--features", "--grower",
+                                "--seed", "--cache-dir", "-o", "--image", "--image-size",
+                                kMaxAreaOption, kMaxExtentOption},
+                               {"--json", "--quiet", "--repair", "--help", "-h"});
   if (!parsed)
     return usageError(parsed.error(), generateUsage());
   const CliArgs& args = parsed.value();
@@ -103,6 +107,14 @@ int runGenerate(const std::vector<std::string>& rawArgs) {
   if (!imageSize)
     return usageError(imageSize.error(), generateUsage());
 
+  std::optional<input::NetworkGrower> grower;
+  if (auto name = args.get("--grower")) {
+    auto named = input::parseGrower(*name);
+    if (!named)
+      return fail(named.error());
+    grower = named.value();
+  }
+
   input::WorldSources sources;
   sources.coastPath = args.get("--coast").value_or("");
   sources.paramsPath = args.get("--params").value_or("");
@@ -117,6 +129,8 @@ int runGenerate(const std::vector<std::string>& rawArgs) {
   auto spec = input::loadWorldSpec(sources, limits.value());
   if (!spec)
     return fail(spec.error());
+  if (grower)
+    spec.value().params.grower = *grower;
   printRepairs(spec.value());
   base::StageTimer timer;
   TerminalProgress progress(args.has("--quiet"));

@@ -13,6 +13,7 @@
 #include "strahler/quality/flow_field.h"
 #include "strahler/quality/geomorphons.h"
 #include "strahler/quality/hack_law.h"
+#include "strahler/quality/network_coverage.h"
 #include "strahler/quality/relief.h"
 #include "strahler/quality/relief_windows.h"
 #include "strahler/quality/river_agreement.h"
@@ -380,7 +381,9 @@ int runAnalyze(const std::vector<std::string>& raw) {
   const quality::HortonStatistics horton = quality::hortonStatistics(world.data().network);
   const quality::HackLaw hack =
       quality::fitHackLaw(world.data().network, quality::networkDrainageAreasKm2(world));
-  std::puts(quality::analysisReportJson(drainage, horton, rivers, relief, hack).c_str());
+  const quality::NetworkCoverage coverage =
+      quality::networkCoverage(world.data().network, world.land());
+  std::puts(quality::analysisReportJson(drainage, horton, rivers, relief, hack, coverage).c_str());
   return 0;
 }
 

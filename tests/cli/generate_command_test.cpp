@@ -185,6 +185,47 @@ TEST(GenerateCommand, DrawnFeaturesOnCorsicaGenerateAndChangeTheKey) {
   EXPECT_NE(nlohmann::json::parse(plain.out)["cacheKey"], summary["cacheKey"]);
 }
 
+TEST(GenerateCommand, TheDlaGrowerMakesAWorldThatDrainsAndExportsTheSameOnAnyThreadCount) {
+  const fs::path dir = scratchDir() / "dla";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path world = dir / "mallorca-dla.world";
+  const std::string coast = " --coast " + std::string(STRAHLER_TEST_DATA_DIR) + "/mallorca.geojson";
+  const ProcessRun dla = strahler("generate --quiet --json --grower dla" + coast + " -o " +
+                                  world.string() + " --cache-dir " + (dir / "cache").string());
+  ASSERT_EQ(dla.exitCode, 0) << dla.err;
+  const auto summary = nlohmann::json::parse(dla.out);
+  EXPECT_GT(summary["nodes"].get<int>(), 1000);
+  // The grower is part of the world's inputs: the grammar's world has another key.
+  const ProcessRun grammar = strahler("generate --quiet --json --grower grammar" + coast +
+                                      " --cache-dir " + (dir / "cache").string());
+  ASSERT_EQ(grammar.exitCode, 0) << grammar.err;
+  EXPECT_NE(nlohmann::json::parse(grammar.out)["cacheKey"], summary["cacheKey"]);
+
+  const ProcessRun analyze = strahler("analyze " + world.string());
+  ASSERT_EQ(analyze.exitCode, 0) << analyze.err;
+  const auto report = nlohmann::json::parse(analyze.out);
+  EXPECT_GE(report["drainage"]["drainingFractionUnburnt"].get<double>(), 0.995);
+  EXPECT_EQ(report["rivers"]["violations"].get<int>(), 0);
+  const double rb = report["horton"]["bifurcationRatio"].get<double>();
+  EXPECT_GT(rb, 3.0);
+  EXPECT_LT(rb, 5.5);
+  EXPECT_GT(report["horton"]["fractalDimension"].get<double>(), 1.0);
+  EXPECT_LT(report["coverage"]["farthestFromRiverM"].get<double>(), 3000.0);
+
+  std::string archives[2];
+  for (int threads = 1; threads <= 2; ++threads) {
+    const fs::path out = dir / ("t" + std::to_string(threads) + ".pmtiles");
+    const ProcessRun run =
+        strahler("export " + world.string() + " --zooms 0-10 --quiet --threads " +
+                 std::to_string(threads) + " -o " + out.string());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    archives[threads - 1] = strahler::test_support::readWholeFile(out);
+  }
+  EXPECT_GT(archives[0].size(), 10000u);
+  EXPECT_TRUE(archives[0] == archives[1]) << "archives differ between thread counts";
+}
+
 constexpr const char* kSeaMountain = R"({"type":"Feature","properties":{"kind":"mountain"},
   "geometry":{"type":"Point","coordinates":[0,0]}})"; // in the sea
 
@@ -225,6 +266,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"generate --features /nonexistent/f.geojson", 1,
                "features file '/nonexistent/f.geojson': file not found"},
         BadRun{"generate --seed -3", 2, "'--seed' must be an integer"},
+        BadRun{"generate --grower lsystem", 1,
+               "unknown grower 'lsystem': expected \"grammar\" (the paper's open grammar) or "
+               "\"dla\" (diffusion-limited aggregation)"},
+        BadRun{"generate --params " + writeScratch("grower.json", R"({"grower": "eden"})").string(),
+               1, "unknown grower 'eden'"},
         BadRun{"generate --image-size 10", 2, "'--image-size' must be an integer in [64, 8192]"},
         BadRun{"generate -o out.txt", 1, "use a .world"},
         BadRun{"generate --frobnicate", 2, "unknown option '--frobnicate'"},

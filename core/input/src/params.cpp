@@ -244,6 +244,7 @@ base::Result<Params> parseParamsUnguarded(std::string_view json, const InputLimi
   known.push_back("seed");
   known.push_back("constraints");
   known.push_back("vegetation");
+  known.push_back("grower");
 
   Params params;
   for (const auto& item : root.items()) {
@@ -264,6 +265,11 @@ base::Result<Params> parseParamsUnguarded(std::string_view json, const InputLimi
       STRAHLER_RETURN_IF_ERROR(readConstraints(value, params.constraints));
     } else if (key == "vegetation") {
       STRAHLER_RETURN_IF_ERROR(detail::readVegetation(value, params.vegetation));
+    } else if (key == "grower") {
+      if (!value.is_string())
+        return wrongType(key, "a string (\"grammar\" or \"dla\")", value);
+      STRAHLER_ASSIGN_OR_RETURN(params.grower, parseGrower(value.get_ref<const std::string&>()),
+                                "params: 'grower'");
     } else {
       return unknownKey("params: ", key, known);
     }
@@ -334,6 +340,21 @@ base::Status checkConstraint(const ConstraintSource& c, std::size_t i) {
 
 } // namespace
 
+const char* growerName(NetworkGrower grower) noexcept {
+  return grower == NetworkGrower::kDla ? "dla" : "grammar";
+}
+
+base::Result<NetworkGrower> parseGrower(std::string_view name) {
+  if (name == "grammar")
+    return NetworkGrower::kGrammar;
+  if (name == "dla")
+    return NetworkGrower::kDla;
+  return makeError(ErrorCode::kInvalidInput, "unknown grower " + quoted(name) +
+                                                 ": expected \"grammar\" (the paper's open "
+                                                 "grammar) or \"dla\" (diffusion-limited "
+                                                 "aggregation)");
+}
+
 base::Status validateParams(const Params& p) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const Range ranges[] = {
@@ -395,6 +416,8 @@ base::Status validateParams(const Params& p) {
                      "params: 'slopeMax' = " + formatNumber(p.slopeMax) +
                          " must be less than 'kappa' κ = " + formatNumber(p.kappa) +
                          " (rivers could not climb at that slope)");
+  if (p.grower != NetworkGrower::kGrammar && p.grower != NetworkGrower::kDla)
+    return makeError(ErrorCode::kInvalidInput, "params: 'grower' is not a known grower");
   if (p.constraints.size() > kMaxConstraints)
     return makeError(ErrorCode::kLimitExceeded,
                      "params: 'constraints' has " + std::to_string(p.constraints.size()) +
@@ -437,7 +460,10 @@ std::string canonicalJson(const Params& params) {
            formatNumber(c.bounds.west) + "," + formatNumber(c.bounds.south) + "," +
            formatNumber(c.bounds.east) + "," + formatNumber(c.bounds.north) + "]}";
   }
-  return out + "]" + detail::vegetationJson(params.vegetation) + "}";
+  out += "]" + detail::vegetationJson(params.vegetation);
+  if (params.grower != NetworkGrower::kGrammar) // worlds from before it keep their text
+    out += std::string(",\"grower\":\"") + growerName(params.grower) + "\"";
+  return out + "}";
 }
 
 } // namespace strahler::input

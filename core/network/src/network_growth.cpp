@@ -7,6 +7,7 @@
 #include "strahler/geometry/distance.h"
 #include "strahler/geometry/distance_transform.h"
 #include "strahler/geometry/grid_index.h"
+#include "strahler/network/dla_growth.h"
 #include "strahler/network/drawn_rivers.h"
 #include "strahler/network/relief_law.h"
 
@@ -479,6 +480,8 @@ base::Result<RiverNetwork> generateNetwork(const input::WorldSpec& spec,
                                            const base::ProgressCallback& progress) {
   STRAHLER_RETURN_IF_ERROR(checkNodeBudget(spec, geometry::area(land.polygons())));
   STRAHLER_ASSIGN_OR_RETURN(std::vector<MouthSite> mouths, placeMouths(spec, land));
+  if (spec.params.grower == input::NetworkGrower::kDla)
+    return growNetworkDla(spec, land, mouths, progress);
   return growNetwork(spec, land, mouths, progress);
 }
 

@@ -43,6 +43,21 @@ Json hortonJson(const HortonStatistics& stats) {
   json["meanStreamLengthM"] = std::move(lengths);
   json["bifurcationRatio"] = number(stats.bifurcationRatio);
   json["lengthRatio"] = number(stats.lengthRatio);
+  json["fractalDimension"] = number(stats.fractalDimension);
+  return json;
+}
+
+Json coverageJson(const NetworkCoverage& coverage) {
+  Json json = Json::object();
+  json["definition"] = "distance from the land point (a cell centre) farthest from every river "
+                       "edge of the graph to the nearest edge";
+  json["farthestFromRiverM"] = number(coverage.farthestM);
+  json["farthestAt"] =
+      std::isfinite(coverage.farthestM)
+          ? Json::array({number(coverage.farthestAt.x), number(coverage.farthestAt.y)})
+          : Json(nullptr);
+  json["fartherThan3KmFraction"] = number(coverage.fartherThan3KmFraction);
+  json["cellSizeM"] = number(coverage.cellSize);
   return json;
 }
 
@@ -156,11 +171,12 @@ Json reliefJson(const ReliefReport& relief) {
 
 std::string analysisReportJson(const DrainageReport& drainage, const HortonStatistics& horton,
                                const RiverProfileReport& rivers, const ReliefReport& relief,
-                               const HackLaw& hack) {
+                               const HackLaw& hack, const NetworkCoverage& coverage) {
   Json json = Json::object();
   json["drainage"] = drainageJson(drainage, relief.drainingFractionUnburnt);
   json["horton"] = hortonJson(horton);
   json["hack"] = hackJson(hack);
+  json["coverage"] = coverageJson(coverage);
   json["rivers"] = riversJson(rivers);
   json["relief"] = reliefJson(relief);
   return json.dump(2);

@@ -45,6 +45,9 @@ void fitRatios(HortonStatistics& stats) {
   }
   stats.bifurcationRatio = std::exp(-detail::fitLine(order, logCount).slope);
   stats.lengthRatio = std::exp(detail::fitLine(order, logLength).slope);
+  stats.fractalDimension = stats.lengthRatio > 1.0
+                               ? std::log(stats.bifurcationRatio) / std::log(stats.lengthRatio)
+                               : std::numeric_limits<double>::quiet_NaN();
 }
 
 } // namespace

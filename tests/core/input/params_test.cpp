@@ -265,5 +265,28 @@ TEST(Params, TributaryLevelsAreInTheCanonicalJsonOnlyWhenSet) {
   EXPECT_EQ(parseParams(R"({"tributaryLevels": 3})").value().tributaryLevels, 3);
 }
 
+TEST(Params, TheGrowerIsInTheCanonicalJsonOnlyWhenNotTheGrammar) {
+  // Worlds made before issue 30 keep their canonical text (and cache keys).
+  EXPECT_EQ(canonicalJson(Params{}).find("grower"), std::string::npos);
+  EXPECT_EQ(parseParams(R"({"grower": "grammar"})").value(), Params{});
+  Params p;
+  p.grower = NetworkGrower::kDla;
+  const std::string text = canonicalJson(p);
+  EXPECT_NE(text.find(R"("constraints":[],"grower":"dla"})"), std::string::npos) << text;
+  auto parsed = parseParams(text);
+  ASSERT_TRUE(parsed.ok()) << parsed.error().message;
+  EXPECT_EQ(parsed.value(), p);
+}
+
+TEST(Params, AnUnknownGrowerIsRefusedByName) {
+  EXPECT_TRUE(failsWith(parseParams(R"({"grower": "lsystem"})"), ErrorCode::kInvalidInput,
+                        "params: 'grower': unknown grower 'lsystem': expected \"grammar\""));
+  EXPECT_TRUE(failsWith(parseParams(R"({"grower": 2})"), ErrorCode::kInvalidInput,
+                        "params: 'grower' must be a string"));
+  EXPECT_EQ(parseGrower("dla").value(), NetworkGrower::kDla);
+  EXPECT_STREQ(growerName(NetworkGrower::kDla), "dla");
+  EXPECT_STREQ(growerName(NetworkGrower::kGrammar), "grammar");
+}
+
 } // namespace
 } // namespace strahler::input

@@ -28,6 +28,7 @@ HortonStatistics sampleHorton() {
   stats.meanStreamLength = {0.0, 100.0, 250.0, 600.0};
   stats.bifurcationRatio = 3.0;
   stats.lengthRatio = 2.449;
+  stats.fractalDimension = std::numeric_limits<double>::quiet_NaN();
   return stats;
 }
 
@@ -76,6 +77,10 @@ TEST(AnalysisReport, ParsesBackWithEveryDocumentedKey) {
   EXPECT_EQ(horton.at("meanStreamLengthM").size(), 3u);
   EXPECT_DOUBLE_EQ(horton.at("bifurcationRatio").get<double>(), 3.0);
   EXPECT_DOUBLE_EQ(horton.at("lengthRatio").get<double>(), 2.449);
+  EXPECT_TRUE(horton.at("fractalDimension").is_null()) << "not set in the sample: NaN";
+  const auto& coverage = json.at("coverage");
+  EXPECT_TRUE(coverage.at("farthestFromRiverM").is_null()) << "not measured";
+  EXPECT_TRUE(coverage.at("farthestAt").is_null());
 
   const auto& rivers = json.at("rivers");
   EXPECT_EQ(rivers.at("samples"), 500);
@@ -174,6 +179,28 @@ TEST(AnalysisReport, NotANumberBecomesNull) {
       analysisReportJson(sampleDrainage(), chain, sampleRivers(), sampleRelief()));
   EXPECT_TRUE(json.at("horton").at("bifurcationRatio").is_null());
   EXPECT_TRUE(json.at("horton").at("lengthRatio").is_null());
+}
+
+TEST(AnalysisReport, FractalDimensionAndCoverage) {
+  HortonStatistics horton = sampleHorton();
+  horton.fractalDimension = 1.25;
+  NetworkCoverage coverage;
+  coverage.farthestM = 2500.0;
+  coverage.farthestAt = {100.0, -200.0};
+  coverage.fartherThan3KmFraction = 0.0;
+  coverage.cellSize = 100.0;
+  const std::string text = analysisReportJson(sampleDrainage(), horton, sampleRivers(),
+                                              sampleRelief(), HackLaw{}, coverage);
+  const auto json = nlohmann::json::parse(text);
+  EXPECT_DOUBLE_EQ(json.at("horton").at("fractalDimension").get<double>(), 1.25);
+  const auto& c = json.at("coverage");
+  EXPECT_DOUBLE_EQ(c.at("farthestFromRiverM").get<double>(), 2500.0);
+  EXPECT_EQ(c.at("farthestAt"), (nlohmann::json{100.0, -200.0}));
+  EXPECT_DOUBLE_EQ(c.at("fartherThan3KmFraction").get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(c.at("cellSizeM").get<double>(), 100.0);
+  EXPECT_TRUE(c.at("definition").is_string());
+  EXPECT_LT(text.find("\"hack\""), text.find("\"coverage\""));
+  EXPECT_LT(text.find("\"coverage\""), text.find("\"rivers\""));
 }
 
 TEST(AnalysisReport, OrdersAndSectionsKeepTheirOrder) {

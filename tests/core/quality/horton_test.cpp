@@ -63,6 +63,25 @@ TEST(Horton, PerfectBinaryTreeOfOrderThree) {
   EXPECT_NEAR(stats.lengthRatio, 1.0, 1e-12);
 }
 
+TEST(Horton, FractalDimensionIsLnRbOverLnRl) {
+  // A binary tree whose stream lengths double with the order: Rb = Rl = 2, so D = 1.
+  TreeBuilder tree;
+  const NodeId trunk = tree.child(tree.mouth(), 400.0);
+  const NodeId left = tree.child(trunk, 200.0), right = tree.child(trunk, 200.0);
+  fork(tree, left);
+  fork(tree, right);
+  const HortonStatistics stats = hortonStatistics(tree.finish());
+  EXPECT_NEAR(stats.bifurcationRatio, 2.0, 1e-12);
+  EXPECT_NEAR(stats.lengthRatio, 2.0, 1e-12);
+  EXPECT_NEAR(stats.fractalDimension, 1.0, 1e-12);
+}
+
+TEST(Horton, FractalDimensionIsUndefinedWhenLengthsDoNotGrow) {
+  TreeBuilder tree;
+  fork(tree, tree.child(tree.mouth())); // every stream 100 m: Rl = 1
+  EXPECT_TRUE(std::isnan(hortonStatistics(tree.finish()).fractalDimension));
+}
+
 TEST(Horton, StreamsFollowChainsAndIgnoreLowerTributaries) {
   // mouth <- t1 <- t2 <- {x <- x2 <- x3, y}; t1 also receives z (order 1).
   TreeBuilder tree;
@@ -77,6 +96,7 @@ TEST(Horton, StreamsFollowChainsAndIgnoreLowerTributaries) {
   EXPECT_NEAR(stats.meanStreamLength[2], 300.0, 1e-9) << "t2 -> t1 -> mouth is one stream";
   EXPECT_NEAR(stats.bifurcationRatio, 3.0, 1e-12);
   EXPECT_NEAR(stats.lengthRatio, 300.0 / (500.0 / 3.0), 1e-12);
+  EXPECT_NEAR(stats.fractalDimension, std::log(3.0) / std::log(1.8), 1e-12);
 }
 
 TEST(Horton, RatiosComeFromALeastSquaresFit) {

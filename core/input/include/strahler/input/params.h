@@ -43,6 +43,18 @@ struct ConstraintSource {
 /// At most this many constraint images per world.
 inline constexpr std::size_t kMaxConstraints = 16;
 
+/// Which grower builds the river network (issue 30).
+enum class NetworkGrower {
+  kGrammar, ///< The open grammar of Section 4.2 (network_growth.h), the paper's.
+  kDla,     ///< Off-lattice diffusion-limited aggregation (seed 001; dla_growth.h).
+};
+
+/// The name of `grower` in params JSON and on the command line: "grammar" or "dla".
+const char* growerName(NetworkGrower grower) noexcept;
+
+/// The grower called `name` ("grammar" or "dla"); kInvalidInput naming both otherwise.
+base::Result<NetworkGrower> parseGrower(std::string_view name);
+
 /// One species' response curves in params.json, each a trapezoid [rise0, rise1, fall1, fall0]
 /// (layers::ResponseCurve): finite, non-decreasing, in [0, 10000].
 struct SpeciesCurves {
@@ -121,6 +133,11 @@ struct Params {
   /// {"tree": {"sediment": [r0, r1, f1, f0], "illumination": [...], "humidity": [...]}, ...}.
   /// Left out of the canonical JSON when empty, so worlds without it keep their cache keys.
   std::map<std::string, SpeciesCurves> vegetation;
+
+  // --- Network grower (issue 30) ---
+  /// The grower of the river network; JSON "grower": "grammar" (default) or "dla". Left out
+  /// of the canonical JSON when "grammar", so worlds without it keep their cache keys.
+  NetworkGrower grower = NetworkGrower::kGrammar;
 
   std::uint64_t seed = 1; ///< Seed of every random choice; JSON: an integer, or a decimal string.
 

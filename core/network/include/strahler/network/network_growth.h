@@ -32,7 +32,8 @@ base::Result<RiverNetwork> growNetwork(const input::WorldSpec& spec,
                                        const std::vector<MouthSite>& mouths,
                                        const base::ProgressCallback& progress = {});
 
-/// placeMouths followed by growNetwork.
+/// placeMouths followed by the grower of spec.params.grower: growNetwork (the grammar) or
+/// growNetworkDla (dla_growth.h).
 base::Result<RiverNetwork> generateNetwork(const input::WorldSpec& spec,
                                            const geometry::PolygonIndex& land,
                                            const base::ProgressCallback& progress = {});

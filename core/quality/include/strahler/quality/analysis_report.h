@@ -4,6 +4,7 @@
 #include "strahler/quality/geomorphons.h"
 #include "strahler/quality/hack_law.h"
 #include "strahler/quality/horton.h"
+#include "strahler/quality/network_coverage.h"
 #include "strahler/quality/relief.h"
 #include "strahler/quality/relief_windows.h"
 #include "strahler/quality/river_agreement.h"
@@ -39,15 +40,18 @@ struct ReliefReport {
 ///                 "pits", "largestUndrainedAreaKm2", "largestUndrainedAt" (local x, y of
 ///                 its lowest cell, when there is one), "fillToleranceM"},
 ///    "horton": {"streamCount": {"1": N_1, "2": N_2, ...},
-///               "meanStreamLengthM": {"1": L_1, ...}, "bifurcationRatio", "lengthRatio"},
+///               "meanStreamLengthM": {"1": L_1, ...}, "bifurcationRatio", "lengthRatio",
+///               "fractalDimension" (ln Rb / ln Rl, seed 001)},
 ///    "hack": {"definition", "nodes": fit, "outlets": fit} with fit = {"exponent",
 ///             "coefficient", "r2", "points"} (hack_law.h; L in km, A in km²),
+///    "coverage": {"definition", "farthestFromRiverM", "farthestAt": [x, y] or null,
+///                 "fartherThan3KmFraction", "cellSizeM"} (network_coverage.h),
 ///    "rivers": {"samples", "violations", "worstRiseM", "worstAt": [x, y]},
 ///    "relief": see reliefJson below}
 /// Orders run from 1 to the highest order, in numeric order. Pretty-printed, 2-space indent.
 std::string analysisReportJson(const DrainageReport& drainage, const HortonStatistics& horton,
                                const RiverProfileReport& rivers, const ReliefReport& relief,
-                               const HackLaw& hack = {});
+                               const HackLaw& hack = {}, const NetworkCoverage& coverage = {});
 
 /// `{"dem": path, "relief": {...}}` for `strahler analyze --dem`, with the relief object:
 ///   {"raster": {"width", "height", "cellSizeM", "landCells"},

@@ -18,6 +18,9 @@ struct HortonStatistics {
   double bifurcationRatio = 0.0;
   /// Rl = exp(slope) of the least-squares line of ln mean length against k; NaN with < 2 orders.
   double lengthRatio = 0.0;
+  /// The network's fractal dimension as seed 001 (after Masek & Turcotte) defines it from the
+  /// mean stream length against order: D = ln Rb / ln Rl; NaN when Rl <= 1 or undefined.
+  double fractalDimension = 0.0;
 };
 
 /// Horton statistics of `network`, whose Strahler numbers must be up to date

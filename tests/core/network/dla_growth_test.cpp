@@ -1,0 +1,271 @@
+#include "corsica_drawn_features.h"
+#include "result_matchers.h"
+#include "test_worlds.h"
+
+#include "strahler/geometry/distance.h"
+#include "strahler/geometry/polygon_index.h"
+#include "strahler/network/dla_growth.h"
+#include "strahler/network/drawn_rivers.h"
+#include "strahler/network/network_growth.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <memory>
+
+namespace strahler::network {
+namespace {
+
+struct GrownWorld {
+  input::WorldSpec spec;
+  std::unique_ptr<geometry::PolygonIndex> land;
+  RiverNetwork network;
+};
+
+GrownWorld growDla(input::WorldSpec spec) {
+  spec.params.grower = input::NetworkGrower::kDla;
+  GrownWorld w{std::move(spec), nullptr, {}};
+  w.land = std::make_unique<geometry::PolygonIndex>(w.spec.land);
+  auto net = generateNetwork(w.spec, *w.land);
+  EXPECT_TRUE(net.ok()) << (net.ok() ? "" : net.error().message);
+  if (net.ok())
+    w.network = std::move(net).value();
+  return w;
+}
+
+/// The grown worlds, each grown once for the whole suite.
+const GrownWorld& world(const std::string& name) {
+  static const GrownWorld mallorca = growDla(test_support::mallorcaSpec());
+  static const GrownWorld island = growDla(test_support::defaultIslandSpec());
+  return name == "mallorca" ? mallorca : island;
+}
+
+class DlaInvariants : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(DlaInvariants, GrowsAPlausibleNetwork) {
+  const GrownWorld& w = world(GetParam());
+  const double areaKm2 = w.spec.areaKm2();
+  EXPECT_GT(w.network.mouths.size(), 3u);
+  EXPECT_GT(double(w.network.nodes.size()), areaKm2 / 3.0);
+  int highest = 0;
+  for (const RiverNode& n : w.network.nodes)
+    highest = std::max(highest, n.strahler);
+  EXPECT_GE(highest, GetParam() == "mallorca" ? 4 : 3); // the default island is small
+}
+
+TEST_P(DlaInvariants, NodesAreInsideTheLandAndAwayFromTheCoast) {
+  const GrownWorld& w = world(GetParam());
+  const double delta = w.spec.params.delta;
+  for (const RiverNode& n : w.network.nodes) {
+    if (!n.parent.valid()) {
+      EXPECT_LT(w.land->distanceToBoundary(n.position, 1.0), 1e-6) << "mouths lie on the shore";
+      continue;
+    }
+    ASSERT_TRUE(w.land->contains(n.position));
+    ASSERT_GT(w.land->distanceToBoundary(n.position, delta + 1.0), delta);
+  }
+}
+
+TEST_P(DlaInvariants, NonAdjacentEdgesAreAtLeastSigmaApart) {
+  const GrownWorld& w = world(GetParam());
+  const auto& nodes = w.network.nodes;
+  const double sigma = w.spec.params.sigma;
+  std::vector<std::size_t> edges;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (nodes[i].parent.valid())
+      edges.push_back(i);
+  std::size_t checked = 0;
+  for (std::size_t a = 0; a < edges.size(); ++a) {
+    const RiverNode& ea = nodes[edges[a]];
+    const geometry::Vec2 a0 = nodes[ea.parent.index()].position, a1 = ea.position;
+    for (std::size_t b = a + 1; b < edges.size(); ++b) {
+      const RiverNode& eb = nodes[edges[b]];
+      const geometry::Vec2 b0 = nodes[eb.parent.index()].position, b1 = eb.position;
+      if (std::abs(a1.x - b1.x) > 3 * sigma || std::abs(a1.y - b1.y) > 3 * sigma)
+        continue;
+      const std::size_t ia = edges[a], ib = edges[b];
+      const bool adjacent =
+          ea.parent == eb.parent || ea.parent.index() == ib || eb.parent.index() == ia;
+      if (adjacent)
+        continue;
+      ++checked;
+      ASSERT_GT(geometry::segmentSegmentDistance(a0, a1, b0, b1), sigma)
+          << "edges below nodes " << ia << " and " << ib;
+    }
+  }
+  EXPECT_GT(checked, edges.size());
+}
+
+TEST_P(DlaInvariants, NodesRiseUpstreamOneEdgeApartWithBinaryConfluences) {
+  const GrownWorld& w = world(GetParam());
+  const auto& nodes = w.network.nodes;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const RiverNode& n = nodes[i];
+    ASSERT_LE(n.children.size(), 2u);
+    ASSERT_EQ(n.priority, n.strahler);
+    for (NodeId c : n.children)
+      ASSERT_EQ(nodes[c.index()].parent.index(), i);
+    if (!n.parent.valid()) {
+      EXPECT_EQ(n.elevation, 0.0);
+      continue;
+    }
+    ASSERT_LT(n.parent.index(), i) << "parents precede children";
+    const RiverNode& p = nodes[n.parent.index()];
+    ASSERT_GT(n.elevation, p.elevation);
+    ASSERT_LT((n.elevation - p.elevation) / w.spec.params.edgeLength, w.spec.params.kappa);
+    ASSERT_NEAR(geometry::distance(n.position, p.position), w.spec.params.edgeLength, 1e-6);
+    ASSERT_EQ(n.tree, p.tree);
+  }
+  for (std::size_t i = 0; i < nodes.size(); i += 7) {
+    std::size_t cur = i, steps = 0;
+    while (nodes[cur].parent.valid() && steps++ <= nodes.size())
+      cur = nodes[cur].parent.index();
+    ASSERT_EQ(w.network.mouths[nodes[i].tree].node.index(), cur);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Worlds, DlaInvariants, ::testing::Values("default", "mallorca"));
+
+TEST(DlaGrowth, SameSeedGivesIdenticalGraph) {
+  const GrownWorld a = growDla(test_support::defaultIslandSpec(7));
+  const GrownWorld b = growDla(test_support::defaultIslandSpec(7));
+  ASSERT_EQ(a.network.nodes.size(), b.network.nodes.size());
+  for (std::size_t i = 0; i < a.network.nodes.size(); ++i) {
+    const RiverNode &x = a.network.nodes[i], &y = b.network.nodes[i];
+    ASSERT_EQ(std::memcmp(&x.position, &y.position, sizeof x.position), 0);
+    ASSERT_EQ(std::memcmp(&x.elevation, &y.elevation, sizeof x.elevation), 0);
+    ASSERT_EQ(x.parent, y.parent);
+    ASSERT_EQ(x.strahler, y.strahler);
+  }
+}
+
+TEST(DlaGrowth, DiffersFromTheGrammarAndBetweenSeeds) {
+  const GrownWorld a = growDla(test_support::defaultIslandSpec(1));
+  const GrownWorld b = growDla(test_support::defaultIslandSpec(2));
+  bool differs = a.network.nodes.size() != b.network.nodes.size();
+  for (std::size_t i = 0; !differs && i < a.network.nodes.size(); ++i)
+    differs = !(a.network.nodes[i].position == b.network.nodes[i].position);
+  EXPECT_TRUE(differs);
+  const input::WorldSpec spec = test_support::defaultIslandSpec(1);
+  const geometry::PolygonIndex land(spec.land);
+  const RiverNetwork grammar = generateNetwork(spec, land).value();
+  bool differsFromGrammar = grammar.nodes.size() != a.network.nodes.size();
+  for (std::size_t i = 0; !differsFromGrammar && i < grammar.nodes.size(); ++i)
+    differsFromGrammar = !(grammar.nodes[i].position == a.network.nodes[i].position);
+  EXPECT_TRUE(differsFromGrammar);
+}
+
+TEST(DlaGrowth, GrowsOnlyFromTheUserMouths) {
+  input::WorldSpec spec = test_support::mallorcaSpec();
+  spec.params.grower = input::NetworkGrower::kDla;
+  const geometry::PolygonIndex land(spec.land);
+  const std::vector<MouthSite> placed = test_support::valueOf(placeMouths(spec, land));
+  const std::vector<MouthSite> three(placed.begin(), placed.begin() + 3);
+  const RiverNetwork net = test_support::valueOf(growNetworkDla(spec, land, three));
+  ASSERT_EQ(net.mouths.size(), 3u);
+  for (std::size_t m = 0; m < 3; ++m)
+    EXPECT_EQ(net.node(net.mouths[m].node).position, three[m].position);
+  EXPECT_GT(net.nodes.size(), 200u) << "three trees fill a good part of the island";
+}
+
+TEST(DlaGrowth, WithoutMouthsGrowsNothingAndFinishes) {
+  const input::WorldSpec spec = test_support::defaultIslandSpec();
+  const geometry::PolygonIndex land(spec.land);
+  const RiverNetwork net = test_support::valueOf(growNetworkDla(spec, land, {}));
+  EXPECT_TRUE(net.nodes.empty());
+  EXPECT_TRUE(net.mouths.empty());
+}
+
+TEST(DlaGrowth, KeepsTheDrawnRiversAndRidgesOfCorsica) {
+  input::WorldSpec spec = test_support::corsicaSpec();
+  spec.features = test_support::corsicaDrawnFeatures(spec);
+  const GrownWorld w = growDla(std::move(spec));
+  const input::Params& params = w.spec.params;
+  std::vector<int> riverOf(w.network.nodes.size(), -1);
+  std::vector<DrawnCourse> courses;
+  for (std::size_t r = 0; r < w.spec.features.rivers.size(); ++r) {
+    const auto course = drawnCourse(w.spec.features.rivers[r], *w.land, params);
+    ASSERT_TRUE(course.has_value());
+    courses.push_back(*course);
+    // The chain: from the r-th mouth, the child at each chain point's exact position.
+    NodeId at = w.network.mouths[r].node;
+    riverOf[at.index()] = static_cast<int>(r);
+    for (std::size_t k = 1; k < courses.back().chain.size(); ++k) {
+      NodeId next;
+      for (NodeId c : w.network.node(at).children)
+        if (w.network.node(c).position == courses.back().node(k))
+          next = c;
+      ASSERT_TRUE(next.valid()) << w.spec.features.rivers[r].name << " chain node " << k;
+      at = next;
+      riverOf[at.index()] = static_cast<int>(r);
+    }
+    EXPECT_EQ(w.network.node(at).position, w.spec.features.rivers[r].line.front());
+  }
+  std::size_t checked = 0, ridgeCrossings = 0, tooNear = 0, riverCrossings = 0;
+  for (std::uint32_t i = 0; i < w.network.nodes.size(); ++i) {
+    const RiverNode& n = w.network.nodes[i];
+    if (!n.parent.valid())
+      continue;
+    const geometry::Vec2 a = w.network.node(n.parent).position, b = n.position;
+    for (const input::RidgeFeature& ridge : w.spec.features.ridges)
+      for (std::size_t k = 1; k < ridge.line.size(); ++k)
+        ridgeCrossings += geometry::segmentsIntersect(a, b, ridge.line[k - 1], ridge.line[k]);
+    const int parentRiver = riverOf[n.parent.index()];
+    if (riverOf[i] >= 0 && riverOf[i] == parentRiver)
+      continue; // an edge of a chain
+    ++checked;
+    for (std::size_t r = 0; r < courses.size(); ++r) {
+      const std::vector<geometry::Vec2>& line = courses[r].line;
+      for (std::size_t k = 1; k < line.size(); ++k) {
+        if (parentRiver == int(r))
+          riverCrossings +=
+              geometry::segmentsIntersect(geometry::lerp(a, b, 0.1), b, line[k - 1], line[k]);
+        else
+          tooNear += geometry::segmentSegmentDistance(a, b, line[k - 1], line[k]) <= params.sigma;
+      }
+    }
+  }
+  EXPECT_GT(checked, 3000u);
+  EXPECT_EQ(ridgeCrossings, 0u);
+  EXPECT_EQ(riverCrossings, 0u);
+  EXPECT_EQ(tooNear, 0u);
+}
+
+/// The share of edges on a mountain's slopes (between half its radius and its radius from
+/// `centre`, where the drawn mountainousness rises) whose upstream direction points toward it.
+double shareTowards(const RiverNetwork& net, geometry::Vec2 centre, double radius) {
+  std::size_t near = 0, towards = 0;
+  for (const RiverNode& n : net.nodes) {
+    if (!n.parent.valid())
+      continue;
+    const geometry::Vec2 a = net.node(n.parent).position;
+    const double d = geometry::distance(a, centre);
+    if (d > radius || d < 0.5 * radius)
+      continue;
+    ++near;
+    towards += geometry::dot(n.position - a, centre - a) > 0.0 ? 1 : 0;
+  }
+  return near == 0 ? 0.0 : double(towards) / double(near);
+}
+
+TEST(DlaGrowth, ADrawnMountainSteersTheGrowthTowardIt) {
+  // A drawn mountain raises the mountainousness around it: the preferred directions bend up
+  // its slopes, so more edges near it run toward its summit than without it.
+  input::WorldSpec spec = test_support::mallorcaSpec();
+  const geometry::Vec2 summit{-20000.0, 10000.0}; // in the Serra de Tramuntana's west
+  const double radius = 12000.0;
+  const GrownWorld plain = growDla(spec);
+  input::MountainFeature mountain;
+  mountain.position = summit;
+  mountain.radius = radius;
+  spec.features.mountains.push_back(mountain);
+  const GrownWorld steered = growDla(std::move(spec));
+  ASSERT_TRUE(steered.land->contains(summit));
+  const double before = shareTowards(plain.network, summit, radius);
+  const double after = shareTowards(steered.network, summit, radius);
+  EXPECT_GT(after, before + 0.03) << before << " -> " << after;
+}
+
+} // namespace
+} // namespace strahler::network
