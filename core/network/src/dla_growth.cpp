@@ -1,7 +1,6 @@
 #include "strahler/network/dla_growth.h"
 
-#include "barriers.h"
-#include "edge_rules.h"
+#include "growing_network.h"
 
 #include "strahler/base/random.h"
 #include "strahler/geometry/distance.h"
@@ -19,12 +18,11 @@
 namespace strahler::network {
 namespace {
 
+using detail::kMinRise;
 using geometry::Vec2;
 
 constexpr std::uint64_t kDlaStream = 0x646c61ull;
 constexpr double kDegree = std::numbers::pi / 180.0;
-constexpr double kMinRise = 0.01;          // metres: children are strictly higher
-constexpr double kSlopeRadiusEdges = 3.0;  // κ test radius, in edge lengths
 constexpr double kMaxNodes = 2'000'000.0;  // memory bound on one network (as the grammar's)
 constexpr double kParticlesPerNode = 40.0; // particle budget per expected node
 constexpr int kMaxWalkSteps = 4000;        // steps of one walk before it is dropped
@@ -44,23 +42,18 @@ struct Nearest {
   std::uint32_t node = 0;
 };
 
-class DlaGrower {
+class DlaGrower : private detail::GrowingNetwork {
 public:
   DlaGrower(const input::WorldSpec& spec, const geometry::PolygonIndex& land)
-      : params_(spec.params), land_(land), relief_(spec, land), rng_(spec.params.seed, kDlaStream),
-        box_(land.bounds()),
-        edges_(land.bounds().expanded(spec.params.edgeLength), spec.params.sigma),
-        nodeGrid_(land.bounds().expanded(spec.params.edgeLength), spec.params.edgeLength),
-        courses_(drawnCourses(spec, land)), barriers_(spec, land, courses_) {}
+      : GrowingNetwork(spec, land), rng_(spec.params.seed, kDlaStream), box_(land.bounds()) {}
 
   RiverNetwork run(const std::vector<MouthSite>& mouths, const base::ProgressCallback& progress,
                    double landArea) {
-    network_.edgeLength = params_.edgeLength;
     for (const MouthSite& m : mouths)
-      addMouth(m);
+      addMouth(m, 1);
     for (std::size_t i = 0; i < mouths.size(); ++i)
       if (mouths[i].drawnRiver >= 0)
-        addChain(network_.mouths[i].node, mouths[i].drawnRiver);
+        addChain(network_.mouths[i].node, mouths[i].drawnRiver, 1);
     const double expected = landArea / (params_.sigma * params_.edgeLength);
     const auto budget = static_cast<std::size_t>(kParticlesPerNode * expected) + 1000;
     int failures = network_.nodes.empty() ? kSaturationFailures : 0; // nothing to stick to
@@ -81,69 +74,6 @@ public:
 
 private:
   double e() const noexcept { return params_.edgeLength; }
-
-  /// The courses of the drawn rivers (spec.features.rivers), by index.
-  static std::vector<std::optional<DrawnCourse>> drawnCourses(const input::WorldSpec& spec,
-                                                              const geometry::PolygonIndex& land) {
-    std::vector<std::optional<DrawnCourse>> courses;
-    for (const input::RiverFeature& r : spec.features.rivers)
-      courses.push_back(drawnCourse(r, land, spec.params));
-    return courses;
-  }
-
-  void addMouth(const MouthSite& m) {
-    const NodeId id = addNode(m.position, 0.0, NodeId::invalid(), m.inward);
-    network_.mouths.push_back({id, m.inward, m.onLake});
-    network_.nodes[id.index()].tree = static_cast<std::uint32_t>(network_.mouths.size() - 1);
-  }
-
-  /// The chain of a drawn river above its mouth, as the grammar places it (its nodes exactly
-  /// on the line, rising by the relief law): the aggregate grows around it.
-  void addChain(NodeId mouth, int river) {
-    const auto& course = courses_[static_cast<std::size_t>(river)];
-    if (!course)
-      return;
-    const std::size_t last = course->chain.size() - 1;
-    const auto placeOf = [&](std::size_t k) {
-      return detail::ChainPlace{river, course->chain[std::min(k + 1, last)],
-                                course->chain[k == 0 ? 0 : k - 1]};
-    };
-    places_[mouth.index()] = placeOf(0);
-    NodeId parent = mouth;
-    for (std::size_t k = 1; k <= last; ++k) {
-      const Vec2 from = network_.nodes[parent.index()].position;
-      const Vec2 p = course->node(k);
-      const double rise = distance(from, p) * relief_.riverSlope(geometry::lerp(from, p, 0.5));
-      const double z = network_.nodes[parent.index()].elevation + std::max(rise, kMinRise);
-      const Vec2 dir = distance(from, p) > 0.0 ? normalize(p - from) : directions_[parent.index()];
-      parent = addNode(p, z, parent, dir);
-      places_[parent.index()] = placeOf(k);
-    }
-  }
-
-  NodeId addNode(Vec2 p, double z, NodeId parent, Vec2 dir) {
-    const NodeId id(static_cast<std::uint32_t>(network_.nodes.size()));
-    RiverNode node;
-    node.position = p;
-    node.elevation = z;
-    node.parent = parent;
-    if (parent.valid()) {
-      RiverNode& up = network_.nodes[parent.index()];
-      up.children.push_back(id);
-      node.tree = up.tree;
-      geometry::Aabb box;
-      box.add(up.position);
-      box.add(p);
-      edges_.insert(box, id.value);
-    }
-    geometry::Aabb point;
-    point.add(p);
-    nodeGrid_.insert(point, id.value);
-    network_.nodes.push_back(node);
-    directions_.push_back(dir);
-    places_.push_back({});
-    return id;
-  }
 
   /// The nearest node to p within `radius` (grid cells of side e around p).
   Nearest nearestNode(Vec2 p, double radius) const {
@@ -242,7 +172,7 @@ private:
           e() * relief_.riverSlope(child) * (1.0 + params_.slopeJitter * rng_.uniform(-1.0, 1.0));
       const double z = parent.elevation + std::max(rise, kMinRise);
       if (valid(parentId, child, z)) {
-        addNode(child, z, parentId, *dir);
+        addNode(child, z, parentId, 1, *dir);
         return StickOutcome::kStuck;
       }
     }
@@ -292,42 +222,6 @@ private:
     const double weight = kSteer * std::min(1.0, g / (2.0 * h) * params_.coastRamp);
     const Vec2 bent = dir + gradient / g * weight;
     return length(bent) > 1e-9 ? normalize(bent) : dir;
-  }
-
-  /// The grammar's geometric tests for a new node p (elevation z) below `parentId`.
-  bool valid(NodeId parentId, Vec2 p, double z) const {
-    const RiverNode& parent = network_.nodes[parentId.index()];
-    const bool fromMouth = !parent.parent.valid();
-    if (fromMouth ? !detail::mouthEdgeValid(land_, parent.position, p, params_.delta)
-                  : !detail::innerEdgeValid(land_, parent.position, p, params_.delta))
-      return false;
-    return clearOfEdges(parent.position, p, parentId) && slopesBelowKappa(p, z) &&
-           barriers_.allows(parent.position, p, places_[parentId.index()]);
-  }
-
-  /// Whether the edge [from, p] stays more than σ from every edge not adjacent to `fromId`.
-  bool clearOfEdges(Vec2 from, Vec2 p, NodeId fromId) const {
-    geometry::Aabb box;
-    box.add(from);
-    box.add(p);
-    return edges_.query(box.expanded(params_.sigma), [&](std::uint32_t c) {
-      const RiverNode& other = network_.nodes[c];
-      if (c == fromId.value || other.parent == fromId)
-        return true;
-      const Vec2 a = network_.nodes[other.parent.index()].position;
-      return geometry::segmentSegmentDistance(from, p, a, other.position) > params_.sigma;
-    });
-  }
-
-  bool slopesBelowKappa(Vec2 p, double z) const {
-    const double radius = kSlopeRadiusEdges * e();
-    geometry::Aabb box;
-    box.add(p);
-    return nodeGrid_.query(box.expanded(radius), [&](std::uint32_t i) {
-      const RiverNode& other = network_.nodes[i];
-      const double d = distance(other.position, p);
-      return d > radius || std::abs(z - other.elevation) < params_.kappa * d;
-    });
   }
 
   /// Whether a node other than leaf `i`, its parent and its siblings lies within 1.5 e of it:
@@ -382,18 +276,8 @@ private:
     network_ = std::move(pruned);
   }
 
-  const input::Params& params_;
-  const geometry::PolygonIndex& land_;
-  ReliefLaw relief_;
   base::Rng rng_;
-  geometry::Aabb box_;           // where particles are launched (rejection on Ω)
-  geometry::GridIndex edges_;    // edge [parent(c), c] registered under child id c
-  geometry::GridIndex nodeGrid_; // every node, cells of side e
-  std::vector<Vec2> directions_; // per node: unit flow direction, upstream
-  std::vector<std::optional<DrawnCourse>> courses_; // drawn rivers, by feature index
-  detail::Barriers barriers_;                       // ridgelines and drawn rivers
-  std::vector<detail::ChainPlace> places_;          // per node: where it sits on a drawn river
-  RiverNetwork network_;
+  geometry::Aabb box_; // where particles are launched (rejection on Ω)
 };
 
 } // namespace

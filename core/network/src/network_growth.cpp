@@ -1,7 +1,6 @@
 #include "strahler/network/network_growth.h"
 
-#include "barriers.h"
-#include "edge_rules.h"
+#include "growing_network.h"
 
 #include "strahler/base/random.h"
 #include "strahler/geometry/distance.h"
@@ -21,12 +20,11 @@
 namespace strahler::network {
 namespace {
 
+using detail::kMinRise;
 using geometry::Vec2;
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr int kAttemptsPerChild = 4;
-constexpr double kMinRise = 0.01;         // metres: children are strictly higher
-constexpr double kSlopeRadiusEdges = 3.0; // κ test radius, in edge lengths
 constexpr double kMaxNodes = 2'000'000.0; // memory bound on one network
 constexpr std::uint64_t kGrowthStream = 0x67726f77ull;
 /// Coverage (issue 16): land farther than this from every river edge is a gap that growth
@@ -49,24 +47,19 @@ struct ChildRequest {
   int priority = 1;
 };
 
-class Grower {
+class Grower : private detail::GrowingNetwork {
 public:
   Grower(const input::WorldSpec& spec, const geometry::PolygonIndex& land)
-      : params_(spec.params), land_(land), relief_(spec, land),
-        rng_(spec.params.seed, kGrowthStream),
-        edges_(land.bounds().expanded(spec.params.edgeLength), spec.params.sigma),
-        nodeGrid_(land.bounds().expanded(spec.params.edgeLength), spec.params.edgeLength),
-        heaps_(static_cast<std::size_t>(std::max(spec.params.maxPriority, 12)) + 1),
-        courses_(drawnCourses(spec, land)), barriers_(spec, land, courses_) {}
+      : GrowingNetwork(spec, land), rng_(spec.params.seed, kGrowthStream),
+        heaps_(static_cast<std::size_t>(std::max(spec.params.maxPriority, 12)) + 1) {}
 
   RiverNetwork run(const std::vector<MouthSite>& mouths, const base::ProgressCallback& progress,
                    double landArea) {
-    network_.edgeLength = params_.edgeLength;
     for (const MouthSite& m : mouths)
-      addMouth(m);
+      addMouth(m, m.priority);
     for (std::size_t i = 0; i < mouths.size(); ++i)
       if (mouths[i].drawnRiver >= 0)
-        addChain(network_.mouths[i].node, mouths[i].drawnRiver);
+        addChain(network_.mouths[i].node, mouths[i].drawnRiver, params_.maxPriority);
     growAll(progress, landArea);
     for (int round = 0; round < kGapRounds && seedGaps() > 0; ++round)
       growAll(progress, landArea);
@@ -213,79 +206,14 @@ private:
       const double z = std::max(params_.edgeLength * relief_.riverSlope(child), kMinRise);
       if (clearOfEdges(site.position, child, NodeId::invalid()) && slopesBelowKappa(child, z) &&
           barriers_.allows(site.position, child, {})) {
-        addMouth(site); // a candidate: growth gives it its children
+        addMouth(site, site.priority); // a candidate: growth gives it its children
         return true;
       }
     }
     return false;
   }
 
-  void addMouth(const MouthSite& m) {
-    const NodeId id = addNode(m.position, 0.0, NodeId::invalid(), m.priority, m.inward);
-    network_.mouths.push_back({id, m.inward, m.onLake});
-    network_.nodes[id.index()].tree = static_cast<std::uint32_t>(network_.mouths.size() - 1);
-  }
-
-  /// The courses of the drawn rivers (spec.features.rivers), by index.
-  static std::vector<std::optional<DrawnCourse>> drawnCourses(const input::WorldSpec& spec,
-                                                              const geometry::PolygonIndex& land) {
-    std::vector<std::optional<DrawnCourse>> courses;
-    for (const input::RiverFeature& r : spec.features.rivers)
-      courses.push_back(drawnCourse(r, land, spec.params));
-    return courses;
-  }
-
-  /// The chain of drawn river `river` above its mouth node: one node per chain point of its
-  /// course, exactly on the line, each child of the one below it, with priority maxPriority
-  /// (the trunks) and the relief law's rise over the step (so monotone upstream). They are
-  /// placed before growth starts, whatever the rules say: the grammar grows around them.
-  void addChain(NodeId mouth, int river) {
-    const auto& course = courses_[static_cast<std::size_t>(river)];
-    if (!course)
-      return;
-    const std::size_t last = course->chain.size() - 1;
-    const auto placeOf = [&](std::size_t k) {
-      return detail::ChainPlace{river, course->chain[std::min(k + 1, last)],
-                                course->chain[k == 0 ? 0 : k - 1]};
-    };
-    places_[mouth.index()] = placeOf(0);
-    NodeId parent = mouth;
-    for (std::size_t k = 1; k <= last; ++k) {
-      const Vec2 from = network_.nodes[parent.index()].position;
-      const Vec2 p = course->node(k);
-      const double rise = distance(from, p) * relief_.riverSlope(geometry::lerp(from, p, 0.5));
-      const double z = network_.nodes[parent.index()].elevation + std::max(rise, kMinRise);
-      const Vec2 dir = distance(from, p) > 0.0 ? normalize(p - from) : directions_[parent.index()];
-      parent = addNode(p, z, parent, params_.maxPriority, dir);
-      places_[parent.index()] = placeOf(k);
-    }
-  }
-
-  NodeId addNode(Vec2 p, double z, NodeId parent, int priority, Vec2 dir) {
-    const NodeId id(static_cast<std::uint32_t>(network_.nodes.size()));
-    RiverNode node;
-    node.position = p;
-    node.elevation = z;
-    node.parent = parent;
-    node.priority = std::max(1, priority);
-    if (parent.valid()) {
-      RiverNode& up = network_.nodes[parent.index()];
-      up.children.push_back(id);
-      node.tree = up.tree;
-      geometry::Aabb box;
-      box.add(up.position);
-      box.add(p);
-      edges_.insert(box, id.value);
-    }
-    geometry::Aabb point;
-    point.add(p);
-    nodeGrid_.insert(point, id.value);
-    network_.nodes.push_back(node);
-    directions_.push_back(dir);
-    places_.push_back({});
-    pushCandidate(id);
-    return id;
-  }
+  void nodeAdded(NodeId id) override { pushCandidate(id); }
 
   void pushCandidate(NodeId id) {
     const RiverNode& n = network_.nodes[id.index()];
@@ -393,63 +321,11 @@ private:
     return false;
   }
 
-  /// The geometric tests of Section 4.2.2 for a new node p (elevation z) below `parentId`.
-  bool valid(NodeId parentId, Vec2 p, double z) const {
-    const RiverNode& parent = network_.nodes[parentId.index()];
-    const bool fromMouth = !parent.parent.valid();
-    if (fromMouth ? !detail::mouthEdgeValid(land_, parent.position, p, params_.delta)
-                  : !detail::innerEdgeValid(land_, parent.position, p, params_.delta))
-      return false;
-    return clearOfOtherEdges(parentId, p) && slopesBelowKappa(p, z) &&
-           barriers_.allows(parent.position, p, places_[parentId.index()]);
-  }
-
-  bool clearOfOtherEdges(NodeId parentId, Vec2 p) const {
-    return clearOfEdges(network_.nodes[parentId.index()].position, p, parentId);
-  }
-
-  /// Whether the edge [from, p] stays more than σ from every edge not adjacent to node
-  /// `from` (`fromId`; invalid for a point that is not yet a node).
-  bool clearOfEdges(Vec2 from, Vec2 p, NodeId fromId) const {
-    geometry::Aabb box;
-    box.add(from);
-    box.add(p);
-    return edges_.query(box.expanded(params_.sigma), [&](std::uint32_t c) {
-      const RiverNode& other = network_.nodes[c];
-      // Edges sharing the parent node are adjacent: the parent's own edge and its siblings'.
-      if (fromId.valid() && (c == fromId.value || other.parent == fromId))
-        return true;
-      const Vec2 a = network_.nodes[other.parent.index()].position;
-      return geometry::segmentSegmentDistance(from, p, a, other.position) > params_.sigma;
-    });
-  }
-
-  bool slopesBelowKappa(Vec2 p, double z) const {
-    const double radius = kSlopeRadiusEdges * params_.edgeLength;
-    geometry::Aabb box;
-    box.add(p);
-    return nodeGrid_.query(box.expanded(radius), [&](std::uint32_t i) {
-      const RiverNode& other = network_.nodes[i];
-      const double d = distance(other.position, p);
-      return d > radius || std::abs(z - other.elevation) < params_.kappa * d;
-    });
-  }
-
-  const input::Params& params_;
-  const geometry::PolygonIndex& land_;
-  ReliefLaw relief_;
   base::Rng rng_;
-  geometry::GridIndex edges_;    // edge [parent(c), c] registered under child id c
-  geometry::GridIndex nodeGrid_; // every node
-  std::vector<MinHeap> heaps_;   // candidates X by priority
+  std::vector<MinHeap> heaps_; // candidates X by priority
   std::size_t candidateCount_ = 0;
   std::size_t highPriorityCount_ = 0;                // candidates with priority > 1
-  std::vector<Vec2> directions_;                     // per node: unit flow direction, upstream
   std::optional<std::vector<MouthSite>> shoreSites_; // for gap mouths, sampled when first needed
-  std::vector<std::optional<DrawnCourse>> courses_;  // drawn rivers, by feature index
-  detail::Barriers barriers_;                        // ridgelines and drawn rivers
-  std::vector<detail::ChainPlace> places_;           // per node: where it sits on a drawn river
-  RiverNetwork network_;
 };
 
 /// Refuses worlds whose network would not fit the memory bound.
