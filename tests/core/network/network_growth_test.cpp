@@ -1,3 +1,4 @@
+#include "grown_world.h"
 #include "test_worlds.h"
 
 #include "strahler/geometry/distance.h"
@@ -8,49 +9,37 @@
 
 #include <cmath>
 #include <cstring>
+#include <string>
+#include <tuple>
 
 namespace strahler::network {
 namespace {
 
-struct GrownWorld {
-  input::WorldSpec spec;
-  std::unique_ptr<geometry::PolygonIndex> land;
-  RiverNetwork network;
-};
+using input::NetworkGrower;
 
-GrownWorld grow(input::WorldSpec spec) {
-  GrownWorld w{std::move(spec), nullptr, {}};
-  w.land = std::make_unique<geometry::PolygonIndex>(w.spec.land);
-  auto net = generateNetwork(w.spec, *w.land);
-  EXPECT_TRUE(net.ok()) << (net.ok() ? "" : net.error().message);
-  if (net.ok())
-    w.network = std::move(net).value();
-  return w;
-}
-
-class NetworkInvariants : public ::testing::TestWithParam<std::string> {
+/// The rules of Section 4.2.2 that every grower keeps, on each world.
+class NetworkInvariants : public ::testing::TestWithParam<std::tuple<NetworkGrower, std::string>> {
 protected:
-  static GrownWorld make(const std::string& name) {
-    if (name == "mallorca")
-      return grow(test_support::mallorcaSpec());
-    return grow(test_support::defaultIslandSpec());
+  static const GrownWorld& grown() {
+    return grownWorld(std::get<0>(GetParam()), std::get<1>(GetParam()));
   }
 };
 
-TEST_P(NetworkInvariants, GrowsAPlausibleNetwork) {
-  const GrownWorld w = make(GetParam());
-  const double areaKm2 = w.spec.areaKm2();
-  EXPECT_GT(w.network.mouths.size(), 3u);
-  // At least one node per 2 km², as in the paper's islands (Table 2: ~1 per 2.6 km²).
-  EXPECT_GT(double(w.network.nodes.size()), areaKm2 / 2.0);
-  int highest = 0;
-  for (const RiverNode& n : w.network.nodes)
-    highest = std::max(highest, n.strahler);
-  EXPECT_GE(highest, 4);
+TEST(NetworkGrowth, GrowsAPlausibleNetwork) {
+  for (const char* name : {"default", "mallorca"}) {
+    const GrownWorld& w = grownWorld(NetworkGrower::kGrammar, name);
+    EXPECT_GT(w.network.mouths.size(), 3u);
+    // At least one node per 2 km², as in the paper's islands (Table 2: ~1 per 2.6 km²).
+    EXPECT_GT(double(w.network.nodes.size()), w.spec.areaKm2() / 2.0);
+    int highest = 0;
+    for (const RiverNode& n : w.network.nodes)
+      highest = std::max(highest, n.strahler);
+    EXPECT_GE(highest, 4);
+  }
 }
 
 TEST_P(NetworkInvariants, NodesAreInsideTheLandAndAwayFromTheCoast) {
-  const GrownWorld w = make(GetParam());
+  const GrownWorld& w = grown();
   const double delta = w.spec.params.delta;
   for (const RiverNode& n : w.network.nodes) {
     if (!n.parent.valid()) {
@@ -63,7 +52,7 @@ TEST_P(NetworkInvariants, NodesAreInsideTheLandAndAwayFromTheCoast) {
 }
 
 TEST_P(NetworkInvariants, NonAdjacentEdgesAreAtLeastSigmaApart) {
-  const GrownWorld w = make(GetParam());
+  const GrownWorld& w = grown();
   const auto& nodes = w.network.nodes;
   const double sigma = w.spec.params.sigma;
   // Brute force over edge pairs with a coarse bounding-box reject.
@@ -94,10 +83,13 @@ TEST_P(NetworkInvariants, NonAdjacentEdgesAreAtLeastSigmaApart) {
 }
 
 TEST_P(NetworkInvariants, EveryNodeIsHigherThanItsParentAndReachesAMouth) {
-  const GrownWorld w = make(GetParam());
+  const GrownWorld& w = grown();
   const auto& nodes = w.network.nodes;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     const RiverNode& n = nodes[i];
+    ASSERT_LE(n.children.size(), 2u) << "binary confluences";
+    for (NodeId c : n.children)
+      ASSERT_EQ(nodes[c.index()].parent.index(), i);
     if (!n.parent.valid()) {
       EXPECT_EQ(n.elevation, 0.0);
       continue;
@@ -118,7 +110,7 @@ TEST_P(NetworkInvariants, EveryNodeIsHigherThanItsParentAndReachesAMouth) {
 }
 
 TEST_P(NetworkInvariants, SlopesBetweenNeighboursStayBelowKappa) {
-  const GrownWorld w = make(GetParam());
+  const GrownWorld& w = grown();
   const auto& nodes = w.network.nodes;
   const double kappa = w.spec.params.kappa;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -130,7 +122,14 @@ TEST_P(NetworkInvariants, SlopesBetweenNeighboursStayBelowKappa) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Worlds, NetworkInvariants, ::testing::Values("default", "mallorca"));
+INSTANTIATE_TEST_SUITE_P(
+    GrowersAndWorlds, NetworkInvariants,
+    ::testing::Combine(::testing::Values(NetworkGrower::kGrammar, NetworkGrower::kDla),
+                       ::testing::Values("default", "mallorca")),
+    [](const auto& tested) {
+      return std::string(std::get<0>(tested.param) == NetworkGrower::kDla ? "dla_" : "grammar_") +
+             std::get<1>(tested.param);
+    });
 
 TEST(NetworkGrowth, SameSeedGivesIdenticalGraph) {
   const GrownWorld a = grow(test_support::defaultIslandSpec(7));
