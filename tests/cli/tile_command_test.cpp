@@ -1,10 +1,12 @@
-// `strahler tile --layer NAME` (issue 28): a layer tile as the server's layers/{name}/ serves it,
-// and the command line's refusals (an unknown layer, a parameter the layer does not take,
-// --format and --layer together, a layer in the Cesium pyramid).
+// `strahler tile`: every format with its magic bytes and the refusals of a tile outside the
+// grid or of a bad size, format or scheme; `--layer NAME` (issue 28) as the server's
+// layers/{name}/ serves it, and its refusals (an unknown layer, a parameter the layer does
+// not take, --format and --layer together, a layer in the Cesium pyramid).
 #include "program_run.h"
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <string>
 
@@ -96,6 +98,34 @@ TEST(TileCommand, WritesVegetationTilesAsTheServerDoes) {
   const ProcessRun z12 = run(tileArgs("--format json", shallow));
   EXPECT_NE(z12.exitCode, 0);
   EXPECT_NE(z12.err.find("zooms 16 to 18"), std::string::npos) << z12.err;
+}
+
+TEST(TileCommand, WritesEveryFormatAndRejectsBadRequests) {
+  const std::string base = "tile " + world().string() + " ";
+  const std::pair<const char*, const char*> formats[] = {
+      {"png", "\x89PNG"}, {"terrarium", "\x89PNG"}, {"png16", "\x89PNG"}, {"tif", "II*"},
+      {"exr", "v/1\x01"}, {"drc", "DRACO"},         {"glb", "glTF"},      {"relief", "\x89PNG"}};
+  for (const auto& [format, magic] : formats) {
+    const fs::path out = scratchDir() / (std::string("t.") + format);
+    const ProcessRun tile = run(base + "--scheme local --z 2 --x 1 --y 2 --format " + format +
+                                " --size 32 -o " + out.string());
+    ASSERT_EQ(tile.exitCode, 0) << format << ": " << tile.err;
+    EXPECT_EQ(strahler::test_support::readWholeFile(out).substr(0, std::strlen(magic)), magic)
+        << format;
+  }
+  const ProcessRun outside = run(base + "--z 3 --x 8 --y 0 --format png -o x.png");
+  EXPECT_EQ(outside.exitCode, 1);
+  EXPECT_NE(outside.err.find("outside the grid"), std::string::npos) << outside.err;
+  const ProcessRun deep = run(base + "--z 19 --x 0 --y 0 --format png -o x.png");
+  EXPECT_EQ(deep.exitCode, 1);
+  const ProcessRun size = run(base + "--z 1 --x 0 --y 0 --format png --size 4096 -o x.png");
+  EXPECT_EQ(size.exitCode, 1);
+  EXPECT_NE(size.err.find("size 4096 is outside"), std::string::npos) << size.err;
+  const ProcessRun format = run(base + "--z 1 --x 0 --y 0 --format bmp -o x.bmp");
+  EXPECT_EQ(format.exitCode, 2);
+  EXPECT_NE(format.err.find("unknown tile format 'bmp'"), std::string::npos) << format.err;
+  const ProcessRun scheme = run(base + "--scheme polar --z 1 --x 0 --y 0 --format png -o x.png");
+  EXPECT_EQ(scheme.exitCode, 2);
 }
 
 } // namespace
