@@ -12,7 +12,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <memory>
 
 namespace strahler::network {
@@ -47,35 +46,6 @@ TEST_P(DlaInvariants, PriorityIsTheStrahlerNumber) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Worlds, DlaInvariants, ::testing::Values("default", "mallorca"));
-
-TEST(DlaGrowth, SameSeedGivesIdenticalGraph) {
-  const GrownWorld a = growDla(test_support::defaultIslandSpec(7));
-  const GrownWorld b = growDla(test_support::defaultIslandSpec(7));
-  ASSERT_EQ(a.network.nodes.size(), b.network.nodes.size());
-  for (std::size_t i = 0; i < a.network.nodes.size(); ++i) {
-    const RiverNode &x = a.network.nodes[i], &y = b.network.nodes[i];
-    ASSERT_EQ(std::memcmp(&x.position, &y.position, sizeof x.position), 0);
-    ASSERT_EQ(std::memcmp(&x.elevation, &y.elevation, sizeof x.elevation), 0);
-    ASSERT_EQ(x.parent, y.parent);
-    ASSERT_EQ(x.strahler, y.strahler);
-  }
-}
-
-TEST(DlaGrowth, DiffersFromTheGrammarAndBetweenSeeds) {
-  const GrownWorld a = growDla(test_support::defaultIslandSpec(1));
-  const GrownWorld b = growDla(test_support::defaultIslandSpec(2));
-  bool differs = a.network.nodes.size() != b.network.nodes.size();
-  for (std::size_t i = 0; !differs && i < a.network.nodes.size(); ++i)
-    differs = !(a.network.nodes[i].position == b.network.nodes[i].position);
-  EXPECT_TRUE(differs);
-  const input::WorldSpec spec = test_support::defaultIslandSpec(1);
-  const geometry::PolygonIndex land(spec.land);
-  const RiverNetwork grammar = generateNetwork(spec, land).value();
-  bool differsFromGrammar = grammar.nodes.size() != a.network.nodes.size();
-  for (std::size_t i = 0; !differsFromGrammar && i < grammar.nodes.size(); ++i)
-    differsFromGrammar = !(grammar.nodes[i].position == a.network.nodes[i].position);
-  EXPECT_TRUE(differsFromGrammar);
-}
 
 TEST(DlaGrowth, GrowsOnlyFromTheUserMouths) {
   input::WorldSpec spec = test_support::mallorcaSpec();

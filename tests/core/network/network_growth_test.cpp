@@ -131,9 +131,20 @@ INSTANTIATE_TEST_SUITE_P(
              std::get<1>(tested.param);
     });
 
-TEST(NetworkGrowth, SameSeedGivesIdenticalGraph) {
-  const GrownWorld a = grow(test_support::defaultIslandSpec(7));
-  const GrownWorld b = grow(test_support::defaultIslandSpec(7));
+/// Whether two networks' node positions differ (or their sizes).
+bool differ(const RiverNetwork& a, const RiverNetwork& b) {
+  bool differs = a.nodes.size() != b.nodes.size();
+  for (std::size_t i = 0; !differs && i < a.nodes.size(); ++i)
+    differs = !(a.nodes[i].position == b.nodes[i].position);
+  return differs;
+}
+
+/// Each grower: the same seed gives the same graph bit for bit, another seed another graph.
+class GrowerSeeds : public ::testing::TestWithParam<NetworkGrower> {};
+
+TEST_P(GrowerSeeds, SameSeedGivesIdenticalGraph) {
+  const GrownWorld a = grow(test_support::defaultIslandSpec(7), GetParam());
+  const GrownWorld b = grow(test_support::defaultIslandSpec(7), GetParam());
   ASSERT_EQ(a.network.nodes.size(), b.network.nodes.size());
   for (std::size_t i = 0; i < a.network.nodes.size(); ++i) {
     const RiverNode &x = a.network.nodes[i], &y = b.network.nodes[i];
@@ -145,13 +156,21 @@ TEST(NetworkGrowth, SameSeedGivesIdenticalGraph) {
   }
 }
 
-TEST(NetworkGrowth, DifferentSeedsGiveDifferentGraphs) {
-  const GrownWorld a = grow(test_support::defaultIslandSpec(1));
-  const GrownWorld b = grow(test_support::defaultIslandSpec(2));
-  bool differs = a.network.nodes.size() != b.network.nodes.size();
-  for (std::size_t i = 0; !differs && i < a.network.nodes.size(); ++i)
-    differs = !(a.network.nodes[i].position == b.network.nodes[i].position);
-  EXPECT_TRUE(differs);
+TEST_P(GrowerSeeds, DifferentSeedsGiveDifferentGraphs) {
+  EXPECT_TRUE(differ(grow(test_support::defaultIslandSpec(1), GetParam()).network,
+                     grow(test_support::defaultIslandSpec(2), GetParam()).network));
+}
+
+INSTANTIATE_TEST_SUITE_P(Growers, GrowerSeeds,
+                         ::testing::Values(NetworkGrower::kGrammar, NetworkGrower::kDla),
+                         [](const auto& tested) {
+                           return std::string(tested.param == NetworkGrower::kDla ? "dla"
+                                                                                  : "grammar");
+                         });
+
+TEST(NetworkGrowth, TheGrowersGiveDifferentGraphs) {
+  EXPECT_TRUE(differ(grow(test_support::defaultIslandSpec(1)).network,
+                     grow(test_support::defaultIslandSpec(1), NetworkGrower::kDla).network));
 }
 
 TEST(NetworkGrowth, RefusesWorldsWithTooManyNodes) {
