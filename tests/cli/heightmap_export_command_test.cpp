@@ -34,10 +34,6 @@ using strahler::test_support::readWholeFile;
 using namespace strahler::test_support::heightmap_export;
 using namespace std::chrono_literals;
 
-ProcessRun strahler(const std::string& args) {
-  return runStrahler(args);
-}
-
 /// Checks that sample (row, column) of the file, read with the sidecar's row order, holds
 /// World::height at that point (at the export's spacing) within one quantisation step.
 void expectSampleMatchesWorld(const strahler::construction::World& world,
@@ -77,8 +73,8 @@ void expectOrientation(const nlohmann::json& side, const std::vector<std::uint16
 
 TEST(ExportHeightmap, UnityWritesLittleEndianRawSouthRowFirst) {
   const fs::path dir = outputDir("unity");
-  const ProcessRun run = strahler("export-heightmap " + islandWorld().string() +
-                                  " --engine unity --size 129 -o " + (dir / "h.raw").string());
+  const ProcessRun run = runStrahler("export-heightmap " + islandWorld().string() +
+                                     " --engine unity --size 129 -o " + (dir / "h.raw").string());
   ASSERT_EQ(run.exitCode, 0) << run.err;
   EXPECT_EQ(fs::file_size(dir / "h.raw"), 129u * 129u * 2u);
   const nlohmann::json side = readSidecar(dir / "h.json");
@@ -95,8 +91,8 @@ TEST(ExportHeightmap, UnityWritesLittleEndianRawSouthRowFirst) {
 
 TEST(ExportHeightmap, UnrealWritesPng16NorthRowFirstWithItsZScale) {
   const fs::path dir = outputDir("unreal");
-  const ProcessRun run = strahler("export-heightmap " + islandWorld().string() +
-                                  " --engine unreal --size 505 -o " + (dir / "h.png").string());
+  const ProcessRun run = runStrahler("export-heightmap " + islandWorld().string() +
+                                     " --engine unreal --size 505 -o " + (dir / "h.png").string());
   ASSERT_EQ(run.exitCode, 0) << run.err;
   int width = 0, height = 0;
   const std::vector<std::uint16_t> v = readPng16(dir / "h.png", width, height);
@@ -116,8 +112,8 @@ TEST(ExportHeightmap, GodotAndRawWriteR16NorthRowFirstInABox) {
   for (const char* engine : {"godot", "raw"}) {
     const fs::path file = dir / (std::string(engine) + ".r16");
     const ProcessRun run =
-        strahler("export-heightmap " + islandWorld().string() + " --engine " + engine +
-                 " --size 100 --local -20000,-10000,10000,8000 -o " + file.string());
+        runStrahler("export-heightmap " + islandWorld().string() + " --engine " + engine +
+                    " --size 100 --local -20000,-10000,10000,8000 -o " + file.string());
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(fs::file_size(file), 100u * 100u * 2u);
     const nlohmann::json side = readSidecar(dir / (std::string(engine) + ".json"));
@@ -133,8 +129,8 @@ TEST(ExportHeightmap, GodotExrAndRawTiffHoldMetresNorthRowFirst) {
   for (const auto& [engine, ext] : {std::pair{"godot", "exr"}, std::pair{"raw", "tif"}}) {
     const fs::path file = dir / (std::string(engine) + "." + ext);
     const ProcessRun run =
-        strahler("export-heightmap " + islandWorld().string() + " --engine " + engine +
-                 " --format " + ext + " --size 97 --quiet -o " + file.string());
+        runStrahler("export-heightmap " + islandWorld().string() + " --engine " + engine +
+                    " --format " + ext + " --size 97 --quiet -o " + file.string());
     ASSERT_EQ(run.exitCode, 0) << run.err;
     // Read back through OpenImageIO (the image module), not the writer's code.
     const auto image = strahler::image::readFloatRaster(file.string());
@@ -163,8 +159,8 @@ TEST(ExportHeightmap, UnrealTilesShareTheirEdgesAndMatchTheWholeExport) {
   const fs::path dir = outputDir("tiles");
   const std::string common = "export-heightmap " + islandWorld().string() +
                              " --engine unreal --format r16 --size 505 --quiet -o ";
-  ASSERT_EQ(strahler(common + (dir / "whole.r16").string()).exitCode, 0);
-  const ProcessRun run = strahler(common + (dir / "t.r16").string() + " --tiles 2x2");
+  ASSERT_EQ(runStrahler(common + (dir / "whole.r16").string()).exitCode, 0);
+  const ProcessRun run = runStrahler(common + (dir / "t.r16").string() + " --tiles 2x2");
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const std::vector<std::uint16_t> whole = readR16(dir / "whole.r16");
   for (int ty = 0; ty < 2; ++ty)
@@ -195,9 +191,9 @@ TEST(ExportHeightmap, WritesTheSameBytesForOneAndTwoThreads) {
   std::string bytes[2];
   for (int threads = 1; threads <= 2; ++threads) {
     const fs::path file = dir / ("h" + std::to_string(threads) + ".png");
-    const ProcessRun run = strahler("export-heightmap " + islandWorld().string() +
-                                    " --engine unreal --size 1009 --quiet --threads " +
-                                    std::to_string(threads) + " -o " + file.string());
+    const ProcessRun run = runStrahler("export-heightmap " + islandWorld().string() +
+                                       " --engine unreal --size 1009 --quiet --threads " +
+                                       std::to_string(threads) + " -o " + file.string());
     ASSERT_EQ(run.exitCode, 0) << run.err;
     bytes[threads - 1] = readWholeFile(file);
   }
@@ -230,14 +226,14 @@ TEST(ExportHeightmap, RefusesBadInputWithAPreciseMessageAndWritesNothing) {
       {"--engine unreal --format png16 --size 8129", "give --tiles"},
   };
   for (const auto& c : cases) {
-    const ProcessRun run = strahler("export-heightmap " + world + " " + c.args + out);
+    const ProcessRun run = runStrahler("export-heightmap " + world + " " + c.args + out);
     EXPECT_EQ(run.exitCode, 1) << c.args << ": " << run.err;
     EXPECT_NE(run.err.find(c.message), std::string::npos) << c.args << ": " << run.err;
   }
   EXPECT_TRUE(fs::is_empty(dir));
   // An output folder that does not exist is a failure (exit 1), found before any work.
-  const ProcessRun unwritable = strahler("export-heightmap " + world + " --engine unity -o " +
-                                         (dir / "missing" / "h.raw").string());
+  const ProcessRun unwritable = runStrahler("export-heightmap " + world + " --engine unity -o " +
+                                            (dir / "missing" / "h.raw").string());
   EXPECT_EQ(unwritable.exitCode, 1) << unwritable.err;
   EXPECT_NE(unwritable.err.find("no folder"), std::string::npos) << unwritable.err;
   EXPECT_TRUE(fs::is_empty(dir));
@@ -258,16 +254,9 @@ void interruptExport(int signal, std::chrono::milliseconds wait) {
   } else {
     const fs::path temporary =
         (dir / "big_x0_y0.png").string() + ".tmp." + std::to_string(run.pid());
-    const auto deadline = std::chrono::steady_clock::now() + 120s;
-    while (!fs::exists(temporary) && std::chrono::steady_clock::now() < deadline)
-      std::this_thread::sleep_for(5ms);
-    ASSERT_TRUE(fs::exists(temporary)) << "no " << temporary << " within 120 s";
+    ASSERT_TRUE(appearsSoon(temporary)) << "no " << temporary << " within 120 s";
   }
-  ::kill(run.pid(), signal);
-  const auto status = run.waitUntil(std::chrono::steady_clock::now() + 30s);
-  ASSERT_TRUE(status) << "export still running 30 s after the signal";
-  EXPECT_TRUE(WIFSIGNALED(*status) && WTERMSIG(*status) == signal) << "wait status " << *status;
-  EXPECT_TRUE(fs::is_empty(dir)) << "left behind after the signal";
+  expectInterruptedLeavingNothing(run, signal, dir);
 }
 
 TEST(ExportHeightmap, SigtermWhileEvaluatingLeavesNothing) {

@@ -31,10 +31,6 @@ using strahler::test_support::readWholeFile;
 using namespace strahler::test_support::heightmap_export;
 using namespace std::chrono_literals;
 
-ProcessRun strahler(const std::string& args) {
-  return runStrahler(args);
-}
-
 /// A 3 km square inland, 129 samples per side (23.4 m cells): steep enough for the talus.
 const std::string kBox = " --local -1500,-1500,1500,1500 --size 129";
 const std::string kErode = " --erode thermal,hydraulic --iterations 20 --talus 30";
@@ -51,8 +47,9 @@ std::vector<double> metres(const fs::path& r16, const nlohmann::json& side) {
 TEST(ExportHeightmapErosion, DiffersFromThePlainExportAndConservesMaterial) {
   const fs::path dir = outputDir("erosion-sums");
   const std::string common = "export-heightmap " + islandWorld().string() + " --engine raw" + kBox;
-  ASSERT_EQ(strahler(common + " --quiet -o " + (dir / "plain.r16").string()).exitCode, 0);
-  const ProcessRun run = strahler(common + kErode + " --quiet -o " + (dir / "eroded.r16").string());
+  ASSERT_EQ(runStrahler(common + " --quiet -o " + (dir / "plain.r16").string()).exitCode, 0);
+  const ProcessRun run =
+      runStrahler(common + kErode + " --quiet -o " + (dir / "eroded.r16").string());
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const nlohmann::json plainSide = readSidecar(dir / "plain.json");
   const nlohmann::json side = readSidecar(dir / "eroded.json");
@@ -92,8 +89,9 @@ TEST(ExportHeightmapErosion, IsTheSeedsErosionOfThePlainGridAndKeepsTheTalus) {
   const fs::path dir = outputDir("erosion-talus");
   const std::string common =
       "export-heightmap " + islandWorld().string() + " --engine raw --format exr" + kBox;
-  ASSERT_EQ(strahler(common + " --quiet -o " + (dir / "plain.exr").string()).exitCode, 0);
-  ASSERT_EQ(strahler(common + kErode + " --quiet -o " + (dir / "eroded.exr").string()).exitCode, 0);
+  ASSERT_EQ(runStrahler(common + " --quiet -o " + (dir / "plain.exr").string()).exitCode, 0);
+  ASSERT_EQ(runStrahler(common + kErode + " --quiet -o " + (dir / "eroded.exr").string()).exitCode,
+            0);
   // Both read back through OpenImageIO: float32 metres.
   const auto plain = strahler::image::readFloatRaster((dir / "plain.exr").string());
   const auto eroded = strahler::image::readFloatRaster((dir / "eroded.exr").string());
@@ -123,14 +121,15 @@ TEST(ExportHeightmapErosion, TiledUnrealExportIsCutFromTheErodedGridWithAnyThrea
                              " --engine unreal --format r16 --local -2000,-2000,2000,2000 "
                              "--size 253 --quiet" +
                              kErode;
-  ASSERT_EQ(strahler(common + " --threads 2 -o " + (dir / "whole.r16").string()).exitCode, 0);
+  ASSERT_EQ(runStrahler(common + " --threads 2 -o " + (dir / "whole.r16").string()).exitCode, 0);
   const std::vector<std::uint16_t> whole = readR16(dir / "whole.r16");
   ASSERT_EQ(whole.size(), 253u * 253u);
   std::string bytes[2][4];
   for (int threads = 1; threads <= 2; ++threads) {
     const std::string stem = "t" + std::to_string(threads);
-    const ProcessRun run = strahler(common + " --tiles 2x2 --threads " + std::to_string(threads) +
-                                    " -o " + (dir / (stem + ".r16")).string());
+    const ProcessRun run =
+        runStrahler(common + " --tiles 2x2 --threads " + std::to_string(threads) + " -o " +
+                    (dir / (stem + ".r16")).string());
     ASSERT_EQ(run.exitCode, 0) << run.err;
     for (int t = 0; t < 4; ++t)
       bytes[threads - 1][t] = readWholeFile(
@@ -153,10 +152,11 @@ TEST(ExportHeightmapErosion, TiledUnrealExportIsCutFromTheErodedGridWithAnyThrea
 TEST(ExportHeightmapErosion, DefaultBoxIsTheLandsBoxGrownToASquare) {
   const fs::path dir = outputDir("erosion-default-box");
   const std::string world = "export-heightmap " + islandWorld().string() + " --engine raw";
-  ASSERT_EQ(strahler(world + " --size 65 --quiet -o " + (dir / "plain.r16").string()).exitCode, 0);
+  ASSERT_EQ(runStrahler(world + " --size 65 --quiet -o " + (dir / "plain.r16").string()).exitCode,
+            0);
   const ProcessRun eroded =
-      strahler(world + " --size 65 --erode thermal --iterations 1 --quiet -o " +
-               (dir / "eroded.r16").string());
+      runStrahler(world + " --size 65 --erode thermal --iterations 1 --quiet -o " +
+                  (dir / "eroded.r16").string());
   ASSERT_EQ(eroded.exitCode, 0) << eroded.err;
   const nlohmann::json land = readSidecar(dir / "plain.json")["localBounds"];
   const nlohmann::json box = readSidecar(dir / "eroded.json")["localBounds"];
@@ -196,7 +196,7 @@ TEST(ExportHeightmapErosion, RefusesBadParametersWithAPreciseMessageAndWritesNot
   };
   for (const auto& c : cases) {
     const ProcessRun run =
-        strahler("export-heightmap " + islandWorld().string() + " --engine raw " + c.args + out);
+        runStrahler("export-heightmap " + islandWorld().string() + " --engine raw " + c.args + out);
     EXPECT_EQ(run.exitCode, 1) << c.args << ": " << run.err;
     EXPECT_NE(run.err.find(c.message), std::string::npos) << c.args << ": " << run.err;
   }
@@ -212,11 +212,7 @@ TEST(ExportHeightmapErosion, SigtermWhileErodingLeavesNothing) {
       "");
   ASSERT_GT(run.pid(), 0);
   std::this_thread::sleep_for(1500ms); // evaluated in well under a second; then eroding
-  ::kill(run.pid(), SIGTERM);
-  const auto status = run.waitUntil(std::chrono::steady_clock::now() + 30s);
-  ASSERT_TRUE(status) << "export still running 30 s after the signal";
-  EXPECT_TRUE(WIFSIGNALED(*status) && WTERMSIG(*status) == SIGTERM) << "wait status " << *status;
-  EXPECT_TRUE(fs::is_empty(dir)) << "left behind after the signal";
+  expectInterruptedLeavingNothing(run, SIGTERM, dir);
 }
 
 } // namespace

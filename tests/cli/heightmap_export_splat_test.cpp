@@ -22,10 +22,6 @@ using strahler::test_support::ProcessRun;
 using strahler::test_support::readWholeFile;
 using namespace strahler::test_support::heightmap_export;
 
-ProcessRun strahler(const std::string& args) {
-  return runStrahler(args);
-}
-
 /// An 8-bit PNG decoded by libspng: `channels` bytes per pixel (1 grey, 4 RGBA); sets the size.
 std::vector<std::uint8_t> readPng8(const fs::path& file, int channels, int& width, int& height) {
   const std::string bytes = readWholeFile(file);
@@ -56,8 +52,8 @@ double worldHeight(const nlohmann::json& side, int row, int column) {
 TEST(ExportHeightmapSplat, UnrealWeightMapsSumTo255AndPutWaterOnTheSea) {
   const fs::path dir = outputDir("splat-unreal");
   const ProcessRun run =
-      strahler("export-heightmap " + islandWorld().string() +
-               " --engine unreal --size 253 --splat --quiet -o " + (dir / "h.png").string());
+      runStrahler("export-heightmap " + islandWorld().string() +
+                  " --engine unreal --size 253 --splat --quiet -o " + (dir / "h.png").string());
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const nlohmann::json side = readSidecar(dir / "h.json");
   const auto& names = strahler::app::kSplatLayerNames;
@@ -105,9 +101,9 @@ TEST(ExportHeightmapSplat, UnityAlphamapsArePowerOfTwoRgbaNorthUpAndTheSameForAn
   for (int threads = 1; threads <= 2; ++threads) {
     const std::string stem = "u" + std::to_string(threads);
     const ProcessRun run =
-        strahler("export-heightmap " + islandWorld().string() +
-                 " --engine unity --size 257 --splat --quiet --threads " + std::to_string(threads) +
-                 " -o " + (dir / (stem + ".raw")).string());
+        runStrahler("export-heightmap " + islandWorld().string() +
+                    " --engine unity --size 257 --splat --quiet --threads " +
+                    std::to_string(threads) + " -o " + (dir / (stem + ".raw")).string());
     ASSERT_EQ(run.exitCode, 0) << run.err;
     for (int m = 0; m < 2; ++m)
       bytes[threads - 1][m] =
@@ -148,10 +144,10 @@ TEST(ExportHeightmapSplat, UnityAlphamapsArePowerOfTwoRgbaNorthUpAndTheSameForAn
 TEST(ExportHeightmapSplat, UsesTheErosionsSedimentWithErode) {
   const fs::path dir = outputDir("splat-eroded");
   const ProcessRun run =
-      strahler("export-heightmap " + islandWorld().string() +
-               " --engine raw --local -1500,-1500,1500,1500 --size 129 --splat --erode "
-               "thermal,hydraulic --iterations 20 --talus 30 --quiet -o " +
-               (dir / "e.r16").string());
+      runStrahler("export-heightmap " + islandWorld().string() +
+                  " --engine raw --local -1500,-1500,1500,1500 --size 129 --splat --erode "
+                  "thermal,hydraulic --iterations 20 --talus 30 --quiet -o " +
+                  (dir / "e.r16").string());
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const nlohmann::json side = readSidecar(dir / "e.json");
   EXPECT_EQ(side["splat"]["sediment"], "the erosion's sediment S (--erode)");
@@ -166,8 +162,8 @@ TEST(ExportHeightmapSplat, UnrealTilesAreCutFromTheWholeWeightMaps) {
   const fs::path dir = outputDir("splat-tiles");
   const std::string common = "export-heightmap " + islandWorld().string() +
                              " --engine unreal --format r16 --size 253 --splat --quiet -o ";
-  ASSERT_EQ(strahler(common + (dir / "whole.r16").string()).exitCode, 0);
-  const ProcessRun run = strahler(common + (dir / "t.r16").string() + " --tiles 2x2");
+  ASSERT_EQ(runStrahler(common + (dir / "whole.r16").string()).exitCode, 0);
+  const ProcessRun run = runStrahler(common + (dir / "t.r16").string() + " --tiles 2x2");
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const nlohmann::json side = readSidecar(dir / "t.json");
   EXPECT_EQ(side["splat"]["files"].size(), 5u * 4u);
@@ -196,10 +192,10 @@ TEST(ExportHeightmapSplat, RefusesWhatItCannotWrite) {
   const fs::path dir = outputDir("splat-refused");
   const std::string world = "export-heightmap " + islandWorld().string();
   const ProcessRun big =
-      strahler(world + " --engine raw --size 4097 --splat -o " + (dir / "h.r16").string());
+      runStrahler(world + " --engine raw --size 4097 --splat -o " + (dir / "h.r16").string());
   EXPECT_EQ(big.exitCode, 1);
   EXPECT_NE(big.err.find("at most 4096 samples per side"), std::string::npos) << big.err;
-  const ProcessRun untiled = strahler(
+  const ProcessRun untiled = runStrahler(
       world + " --engine unreal --format r16 --size 8129 --splat -o " + (dir / "h.r16").string());
   EXPECT_EQ(untiled.exitCode, 1);
   EXPECT_NE(untiled.err.find("or Unreal --tiles"), std::string::npos) << untiled.err;

@@ -1,8 +1,9 @@
 #pragma once
 // What the export-heightmap tests share: the program run in a scratch folder, the default
-// island generated once per test process, and independent readers of the files (r16 bytes,
-// libspng, nlohmann::json).
+// island generated once per test process, interrupting a run, and independent readers of the files
+// (r16 bytes, libspng, nlohmann::json).
 #include "program_run.h"
+#include "serve_process.h"
 
 #include "strahler/construction/world.h"
 #include "strahler/store/world_file.h"
@@ -10,10 +11,14 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
+#include <csignal>
 #include <cstdint>
 #include <filesystem>
 #include <spng.h>
 #include <string>
+#include <sys/wait.h>
+#include <thread>
 #include <vector>
 
 namespace strahler::test_support::heightmap_export {
@@ -47,6 +52,24 @@ inline fs::path outputDir(const std::string& name) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
+}
+
+/// Whether `file` appears within 120 s (polled every 5 ms).
+inline bool appearsSoon(const fs::path& file) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(file) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  return fs::exists(file);
+}
+
+/// Sends `signal` to the export `run`, and expects it to die by that signal within 30 s
+/// leaving `dir` empty.
+inline void expectInterruptedLeavingNothing(ServeProcess& run, int signal, const fs::path& dir) {
+  ::kill(run.pid(), signal);
+  const auto status = run.waitUntil(std::chrono::steady_clock::now() + std::chrono::seconds(30));
+  ASSERT_TRUE(status) << "export still running 30 s after the signal";
+  EXPECT_TRUE(WIFSIGNALED(*status) && WTERMSIG(*status) == signal) << "wait status " << *status;
+  EXPECT_TRUE(fs::is_empty(dir)) << "left behind after the signal";
 }
 
 /// 16-bit samples of an r16 file read as little-endian bytes, whatever the host's order.

@@ -29,10 +29,6 @@ using strahler::test_support::readWholeFile;
 using namespace strahler::test_support::heightmap_export;
 using namespace std::chrono_literals;
 
-ProcessRun strahler(const std::string& args) {
-  return runStrahler(args);
-}
-
 /// One plant of a CSV file.
 struct Plant {
   std::string species;
@@ -86,9 +82,9 @@ const std::string kBox = " --local -400,-400,400,400";
 
 TEST(ExportHeightmapVegetation, UnityPlantsStandOnTheHeightmapInsideTheTerrain) {
   const fs::path dir = outputDir("vegetation-unity");
-  const ProcessRun run = strahler("export-heightmap " + islandWorld().string() + kBox +
-                                  " --engine unity --size 129 --vegetation csv --quiet -o " +
-                                  (dir / "u.raw").string());
+  const ProcessRun run = runStrahler("export-heightmap " + islandWorld().string() + kBox +
+                                     " --engine unity --size 129 --vegetation csv --quiet -o " +
+                                     (dir / "u.raw").string());
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const nlohmann::json side = readSidecar(dir / "u.json");
   const std::vector<std::uint16_t> heights = readR16(dir / "u.raw");
@@ -115,12 +111,12 @@ TEST(ExportHeightmapVegetation, UnityPlantsStandOnTheHeightmapInsideTheTerrain) 
 TEST(ExportHeightmapVegetation, UnrealJsonIsTheSamePlantsInCentimetresFromTheNorthWest) {
   const fs::path dir = outputDir("vegetation-unreal");
   const std::string common = "export-heightmap " + islandWorld().string() + kBox + " --quiet";
-  ASSERT_EQ(strahler(common + " --engine unity --size 129 --vegetation csv -o " +
-                     (dir / "u.raw").string())
+  ASSERT_EQ(runStrahler(common + " --engine unity --size 129 --vegetation csv -o " +
+                        (dir / "u.raw").string())
                 .exitCode,
             0);
-  const ProcessRun run = strahler(common + " --engine unreal --size 127 --vegetation json -o " +
-                                  (dir / "e.png").string());
+  const ProcessRun run = runStrahler(common + " --engine unreal --size 127 --vegetation json -o " +
+                                     (dir / "e.png").string());
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const std::map<std::string, Plant> unity = readCsv(dir / "u_vegetation.csv");
   const nlohmann::json unreal = nlohmann::json::parse(readWholeFile(dir / "e_vegetation.json"));
@@ -146,16 +142,16 @@ TEST(ExportHeightmapVegetation, AnInnerBoxHoldsExactlyItsPlantsWithAnyThreadCoun
   std::string bytes[2];
   for (int threads = 1; threads <= 2; ++threads) {
     const fs::path out = dir / ("outer" + std::to_string(threads) + ".r16");
-    ASSERT_EQ(strahler(common + kBox + " --vegetation csv --threads " + std::to_string(threads) +
-                       " -o " + out.string())
+    ASSERT_EQ(runStrahler(common + kBox + " --vegetation csv --threads " + std::to_string(threads) +
+                          " -o " + out.string())
                   .exitCode,
               0);
     bytes[threads - 1] =
         readWholeFile(dir / ("outer" + std::to_string(threads) + "_vegetation.csv"));
   }
   EXPECT_EQ(bytes[0], bytes[1]);
-  ASSERT_EQ(strahler(common + " --local -100,-250,300,150 --vegetation csv -o " +
-                     (dir / "inner.r16").string())
+  ASSERT_EQ(runStrahler(common + " --local -100,-250,300,150 --vegetation csv -o " +
+                        (dir / "inner.r16").string())
                 .exitCode,
             0);
   const auto outer = readCsv(dir / "outer1_vegetation.csv");
@@ -174,8 +170,8 @@ TEST(ExportHeightmapVegetation, TiledUnrealExportsWriteTheSamePlants) {
   const fs::path dir = outputDir("vegetation-tiles");
   const std::string common = "export-heightmap " + islandWorld().string() + kBox +
                              " --engine unreal --format r16 --size 127 --vegetation csv --quiet";
-  ASSERT_EQ(strahler(common + " -o " + (dir / "whole.r16").string()).exitCode, 0);
-  const ProcessRun run = strahler(common + " --tiles 2x2 -o " + (dir / "t.r16").string());
+  ASSERT_EQ(runStrahler(common + " -o " + (dir / "whole.r16").string()).exitCode, 0);
+  const ProcessRun run = runStrahler(common + " --tiles 2x2 -o " + (dir / "t.r16").string());
   ASSERT_EQ(run.exitCode, 0) << run.err;
   EXPECT_EQ(readWholeFile(dir / "t_vegetation.csv"), readWholeFile(dir / "whole_vegetation.csv"));
   EXPECT_TRUE(fs::exists(dir / "t_x1_y1.r16"));
@@ -190,22 +186,15 @@ TEST(ExportHeightmapVegetation, SigtermWhilePlacingPlantsLeavesNothing) {
       "");
   ASSERT_GT(run.pid(), 0);
   const fs::path temporary = dir / ("v_vegetation.json.tmp." + std::to_string(run.pid()));
-  const auto deadline = std::chrono::steady_clock::now() + 120s;
-  while (!fs::exists(temporary) && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(5ms);
-  ASSERT_TRUE(fs::exists(temporary)) << "no " << temporary << " within 120 s";
-  ::kill(run.pid(), SIGTERM);
-  const auto status = run.waitUntil(std::chrono::steady_clock::now() + 30s);
-  ASSERT_TRUE(status) << "export still running 30 s after the signal";
-  EXPECT_TRUE(WIFSIGNALED(*status) && WTERMSIG(*status) == SIGTERM) << "wait status " << *status;
-  EXPECT_TRUE(fs::is_empty(dir)) << "left behind after the signal";
+  ASSERT_TRUE(appearsSoon(temporary)) << "no " << temporary << " within 120 s";
+  expectInterruptedLeavingNothing(run, SIGTERM, dir);
 }
 
 TEST(ExportHeightmapVegetation, RefusesBadInput) {
   const fs::path dir = outputDir("vegetation-refused");
   const std::string world = "export-heightmap " + islandWorld().string();
   const ProcessRun format =
-      strahler(world + " --engine raw --vegetation xml -o " + (dir / "h.r16").string());
+      runStrahler(world + " --engine raw --vegetation xml -o " + (dir / "h.r16").string());
   EXPECT_EQ(format.exitCode, 1);
   EXPECT_NE(format.err.find("--vegetation xml: use csv or json"), std::string::npos) << format.err;
   EXPECT_TRUE(fs::is_empty(dir));
