@@ -75,4 +75,16 @@ base::Result<std::optional<std::uint64_t>> CliArgs::getU64(const std::string& na
   return std::optional<std::uint64_t>(v);
 }
 
+std::vector<std::string> splitCommas(const std::string& text) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma - start));
+    if (comma == std::string::npos)
+      return parts;
+    start = comma + 1;
+  }
+}
+
 } // namespace strahler::app

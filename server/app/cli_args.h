@@ -40,4 +40,7 @@ private:
   std::vector<std::string> positional_;
 };
 
+/// The parts of a comma-separated option value, empty parts kept ("a,,b" → a, "", b).
+std::vector<std::string> splitCommas(const std::string& text);
+
 } // namespace strahler::app

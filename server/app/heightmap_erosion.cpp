@@ -1,5 +1,6 @@
 #include "heightmap_erosion.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -20,10 +21,7 @@ base::Result<std::optional<erosion::Params>> parseErosion(const CliArgs& args) {
   }
   erosion::Params p;
   p.thermal = p.hydraulic = false;
-  std::size_t start = 0;
-  while (start <= erode->size()) {
-    const std::size_t comma = std::min(erode->find(',', start), erode->size());
-    const std::string name = erode->substr(start, comma - start);
+  for (const std::string& name : splitCommas(*erode)) {
     if (name == "thermal")
       p.thermal = true;
     else if (name == "hydraulic")
@@ -33,7 +31,6 @@ base::Result<std::optional<erosion::Params>> parseErosion(const CliArgs& args) {
                                                      name +
                                                      "'; use thermal, hydraulic or both "
                                                      "(thermal,hydraulic)");
-    start = comma + 1;
   }
   if (const auto text = args.get("--iterations")) {
     char* end = nullptr;
@@ -56,6 +53,12 @@ base::Result<std::optional<erosion::Params>> parseErosion(const CliArgs& args) {
   return std::optional<erosion::Params>(p);
 }
 
+geometry::Aabb squareAbout(const geometry::Aabb& box) {
+  const geometry::Vec2 c = box.center();
+  const double half = std::max(box.size().x, box.size().y) / 2;
+  return geometry::Aabb{{c.x - half, c.y - half}, {c.x + half, c.y + half}};
+}
+
 base::Status checkErosionGrid(int size, const geometry::Aabb& box) {
   if (size > kMaxErosionSize)
     return makeError(ErrorCode::kInvalidInput,
@@ -65,13 +68,12 @@ base::Status checkErosionGrid(int size, const geometry::Aabb& box) {
                          std::to_string(kMaxErosionSize) + " samples per side (1.2 GB)");
   const double dx = box.size().x / (size - 1), dy = box.size().y / (size - 1);
   if (std::abs(dx - dy) > kErosionSquareTolerance * std::max(dx, dy)) {
-    const double half = std::max(box.size().x, box.size().y) / 2;
-    const geometry::Vec2 c{(box.min.x + box.max.x) / 2, (box.min.y + box.max.y) / 2};
+    const geometry::Aabb square = squareAbout(box);
     char text[300];
     std::snprintf(text, sizeof text,
                   "--erode: the erosion needs square cells, and this box gives %.2f × %.2f m; "
                   "give a square box, e.g. --local %.0f,%.0f,%.0f,%.0f (the square around it)",
-                  dx, dy, c.x - half, c.y - half, c.x + half, c.y + half);
+                  dx, dy, square.min.x, square.min.y, square.max.x, square.max.y);
     return makeError(ErrorCode::kInvalidInput, text);
   }
   return base::Ok{};

@@ -29,6 +29,9 @@ inline constexpr double kErosionSquareTolerance = 0.01;
 /// outside (0, 90), or --iterations / --talus without --erode.
 base::Result<std::optional<erosion::Params>> parseErosion(const CliArgs& args);
 
+/// The square with `box`'s centre whose side is `box`'s longer side (it holds all of `box`).
+geometry::Aabb squareAbout(const geometry::Aabb& box);
+
 /// kInvalidInput when a size × size grid over `box` (local metres) cannot be eroded: a side
 /// above kMaxErosionSize, or cells not square within kErosionSquareTolerance (the message
 /// proposes the square --local around the box's centre that holds it).

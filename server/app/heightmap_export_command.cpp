@@ -99,17 +99,13 @@ struct Options {
 base::Result<std::vector<double>> parseNumbers(const std::string& option, const std::string& text,
                                                std::size_t count) {
   std::vector<double> values;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = std::min(text.find(',', start), text.size());
-    const std::string part = text.substr(start, comma - start);
+  for (const std::string& part : splitCommas(text)) {
     char* end = nullptr;
     const double v = std::strtod(part.c_str(), &end);
     if (part.empty() || end != part.c_str() + part.size() || !std::isfinite(v))
       return makeError(ErrorCode::kInvalidInput,
                        option + " " + text + ": '" + part + "' is not a number");
     values.push_back(v);
-    start = comma + 1;
   }
   if (values.size() != count)
     return makeError(ErrorCode::kInvalidInput, option + " " + text + ": expected " +
@@ -509,11 +505,8 @@ base::Result<geometry::Aabb> exportBox(const Options& o, const construction::Wor
     for (geometry::Vec2 v : p.outer)
       land.add(v);
   geometry::Aabb box = land;
-  if (o.erosion) { // the erosion wants square cells: the land's box grown to a square
-    const geometry::Vec2 c = land.center();
-    const double half = std::max(land.size().x, land.size().y) / 2;
-    box = geometry::Aabb{{c.x - half, c.y - half}, {c.x + half, c.y + half}};
-  }
+  if (o.erosion) // the erosion wants square cells
+    box = squareAbout(land);
   std::string asked;
   if (o.local) {
     box = *o.local;
