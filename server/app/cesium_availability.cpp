@@ -65,7 +65,8 @@ std::string CesiumAvailability::metadataJson(const tiling::TileId& tile) const {
   return json{{"available", std::move(levels)}}.dump();
 }
 
-std::string CesiumAvailability::layerJson(const std::string& name) const {
+std::string CesiumAvailability::layerJson(const std::string& name,
+                                          const std::string& version) const {
   json available = json::array();
   for (int z = 0; z <= std::min(kMetadataLevels, maxZoom_); ++z)
     available.push_back(json::array({rangeJson(*level(z))}));
@@ -73,7 +74,7 @@ std::string CesiumAvailability::layerJson(const std::string& name) const {
       {"tilejson", "2.1.0"},
       {"name", name},
       {"description", "strahler terrain (quantized-mesh-1.0; sea level is the WGS84 ellipsoid)"},
-      {"version", "1.0.0"},
+      {"version", version},
       {"format", "quantized-mesh-1.0"},
       {"attribution", "strahler (procedural terrain)"},
       {"scheme", "tms"},

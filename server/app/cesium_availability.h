@@ -38,8 +38,10 @@ public:
   std::string metadataJson(const tiling::TileId& tile) const;
   /// layer.json: format, tiles template, version, scheme, projection, bounds, zooms,
   /// extensions, attribution, `available` for levels 0..kMetadataLevels and
-  /// metadataAvailability.
-  std::string layerJson(const std::string& name) const;
+  /// metadataAvailability. Its `version` is the world's content version (worldVersion()),
+  /// which the tiles template carries as `?v={version}`: Cesium clients put it in every tile
+  /// URL, so a regenerated world's tiles have new URLs.
+  std::string layerJson(const std::string& name, const std::string& version) const;
   /// The deepest level.
   int maxZoom() const noexcept { return maxZoom_; }
 

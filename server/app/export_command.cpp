@@ -12,6 +12,7 @@
 #include "terminal_progress.h"
 #include "tile_service.h"
 #include "vector_layers.h"
+#include "world_version.h"
 
 #include "strahler/store/world_file.h"
 
@@ -251,6 +252,8 @@ archive::ArchiveMetadata metadataFor(const construction::WorldData& world, const
   m.extra.insert(m.extra.begin(), {{"generator", "strahler " STRAHLER_VERSION},
                                    {"generatorVersion", world.generatorVersion},
                                    {"worldId", world.cacheKey},
+                                   // The served tiles' `?v=`: which world content these are.
+                                   {"worldVersion", worldVersion(world)},
                                    {"seed", std::to_string(world.params.seed)},
                                    {"areaKm2", std::to_string(std::llround(world.areaKm2()))}});
   return m;

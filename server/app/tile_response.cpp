@@ -9,7 +9,16 @@
 namespace strahler::app {
 namespace {
 
+/// A tile asked for by its world's current version: that URL names these bytes for ever.
 constexpr const char* kTileCacheControl = "public, max-age=86400, immutable";
+/// A tile asked for without the version, or with another one: the same URL may name other
+/// bytes once the world is regenerated, so caches keep it briefly and then revalidate (its
+/// ETag follows the content, so an old one is never answered 304).
+constexpr const char* kUnversionedTileCacheControl = "public, max-age=60, must-revalidate";
+
+const char* cacheControl(bool currentVersion) {
+  return currentVersion ? kTileCacheControl : kUnversionedTileCacheControl;
+}
 
 constexpr std::uint64_t kFnvOffset = 1469598103934665603ull;
 
@@ -21,11 +30,12 @@ std::uint64_t fnv1a(std::string_view text, std::uint64_t h = kFnvOffset) {
 }
 
 /// Header fields of a tile's 200 response.
-std::vector<std::pair<std::string, std::string>> tileHeaders(const service::CachedTile& t) {
+std::vector<std::pair<std::string, std::string>> tileHeaders(const service::CachedTile& t,
+                                                             bool currentVersion) {
   std::vector<std::pair<std::string, std::string>> headers = {
       {"Content-Type", t.mimeType},
       {"ETag", t.etag},
-      {"Cache-Control", kTileCacheControl},
+      {"Cache-Control", cacheControl(currentVersion)},
       {"Server-Timing",
        "eval;dur=" + std::to_string(t.evaluateMs) + ", encode;dur=" + std::to_string(t.encodeMs)}};
   if (!t.contentEncoding.empty())
@@ -53,8 +63,8 @@ int errorStatus(service::TileStatus status) {
 
 } // namespace
 
-std::string tileEtag(const std::string& worldKey, const std::string& tileKey) {
-  std::uint64_t h = fnv1a(tileKey, fnv1a("|", fnv1a(worldKey)));
+std::string tileEtag(const std::string& worldVersion, const std::string& tileKey) {
+  std::uint64_t h = fnv1a(tileKey, fnv1a("|", fnv1a(worldVersion)));
   std::string etag(18, '"');
   for (int i = 16; i >= 1; --i, h >>= 4)
     etag[static_cast<std::size_t>(i)] = "0123456789abcdef"[h & 0xF];
@@ -77,10 +87,10 @@ bool etagMatches(const std::string& ifNoneMatch, const std::string& etag) {
   return false;
 }
 
-http::Response notModified(const std::string& etag, const std::string& vary) {
+http::Response notModified(const std::string& etag, const std::string& vary, bool currentVersion) {
   http::Response r;
   r.status = 304;
-  r.headers = {{"ETag", etag}, {"Cache-Control", kTileCacheControl}};
+  r.headers = {{"ETag", etag}, {"Cache-Control", cacheControl(currentVersion)}};
   if (!vary.empty())
     r.headers.emplace_back("Vary", vary);
   r.route = "tile";
@@ -100,14 +110,14 @@ std::shared_ptr<const service::CachedTile> cachedTile(RenderedTile tile, const s
   t->evaluateMs = tile.evaluateMs;
   t->encodeMs = tile.encodeMs;
   http::Response plain;
-  plain.headers = tileHeaders(*t);
+  plain.headers = tileHeaders(*t, true);
   plain.sharedBody = std::shared_ptr<const std::string>(t, &t->bytes);
   t->httpFields = http::prepareFields(plain);
   t->httpFields.shrink_to_fit();
   return t;
 }
 
-http::Response tileResponse(const service::TileCache::Outcome& outcome) {
+http::Response tileResponse(const service::TileCache::Outcome& outcome, bool currentVersion) {
   if (outcome.status != service::TileStatus::kOk || !outcome.tile) {
     const int status = errorStatus(outcome.status);
     http::Response r = http::errorResponse(status, outcome.message);
@@ -116,13 +126,13 @@ http::Response tileResponse(const service::TileCache::Outcome& outcome) {
     r.route = "tile";
     return r;
   }
-  // The bytes and prepared header fields alias the cached tile: a hit formats and copies
-  // nothing.
+  // The bytes and prepared header fields (those of the current version) alias the cached tile:
+  // a hit by a versioned URL formats and copies nothing.
   const std::shared_ptr<const service::CachedTile>& tile = outcome.tile;
   http::Response r;
   r.sharedBody = std::shared_ptr<const std::string>(tile, &tile->bytes);
-  if (tile->httpFields.empty()) {
-    r.headers = tileHeaders(*tile);
+  if (tile->httpFields.empty() || !currentVersion) {
+    r.headers = tileHeaders(*tile, currentVersion);
   } else {
     r.preparedFields = std::shared_ptr<const std::string>(tile, &tile->httpFields);
   }

@@ -10,16 +10,18 @@
 
 namespace strahler::app {
 
-/// The strong ETag of a tile: "\"" + 16 hex digits of FNV-1a(worldKey + "|" + tileKey) + "\"",
-/// from its world's cache key and its tileKey().
-std::string tileEtag(const std::string& worldKey, const std::string& tileKey);
+/// The strong ETag of a tile: "\"" + 16 hex digits of FNV-1a(worldVersion + "|" + tileKey) +
+/// "\"", from its world's content version (worldVersion()) and its tileKey(): a function of the
+/// bytes, so a regenerated world's tiles never match an old ETag.
+std::string tileEtag(const std::string& worldVersion, const std::string& tileKey);
 
 /// True when an If-None-Match value (a list, or "*") names `etag`.
 bool etagMatches(const std::string& ifNoneMatch, const std::string& etag);
 
 /// The 304 answering a conditional request for the tile of `etag` (with the Vary of its 200,
-/// `vary`, when not empty).
-http::Response notModified(const std::string& etag, const std::string& vary = {});
+/// `vary`, when not empty), with the Cache-Control of tileResponse(…, currentVersion).
+http::Response notModified(const std::string& etag, const std::string& vary = {},
+                           bool currentVersion = true);
 
 /// `tile` as the cache keeps it, with its ETag and the header fields of its 200 response
 /// prepared once, so that every answer from the cache formats and copies nothing. `vary` names
@@ -28,9 +30,10 @@ std::shared_ptr<const service::CachedTile> cachedTile(RenderedTile tile, const s
                                                       const std::string& vary = {});
 
 /// The one mapping from a tile's outcome to HTTP: kOk → 200 with the tile (Content-Type, ETag,
-/// immutable Cache-Control, Server-Timing), kNotFound → 404, kUnsupported → 501, kRetryLater →
-/// 503 with Retry-After: 1, kFailed → 500; the errors carry the outcome's message as JSON.
-/// Route label "tile".
-http::Response tileResponse(const service::TileCache::Outcome& outcome);
+/// Cache-Control, Server-Timing), kNotFound → 404, kUnsupported → 501, kRetryLater → 503 with
+/// Retry-After: 1, kFailed → 500; the errors carry the outcome's message as JSON. Cache-Control
+/// is "public, max-age=86400, immutable" when the URL carried the world's current version
+/// (`currentVersion`), else "public, max-age=60, must-revalidate". Route label "tile".
+http::Response tileResponse(const service::TileCache::Outcome& outcome, bool currentVersion = true);
 
 } // namespace strahler::app

@@ -18,6 +18,7 @@
 #include "vegetation_route.h"
 #include "world_bounds.h"
 #include "world_documents.h"
+#include "world_version.h"
 
 #include <future>
 #include <utility>
@@ -65,7 +66,9 @@ struct TileServer::ServedWorld {
   /// rivers.geojson, being written from the start (writeRiversAsync). Declared after `tiles`,
   /// whose world it reads.
   std::shared_future<RiversText> rivers;
-  std::string cacheKey; ///< The world's cache key: part of every ETag.
+  /// The world's content version (worldVersion()): in every tile URL handed out, and part of
+  /// every ETag.
+  std::string version;
   LonLatBox bounds;
   geometry::Vec2 center;
 };
@@ -79,15 +82,16 @@ TileServer::TileServer(std::vector<std::pair<std::string, construction::WorldDat
     w->id = id;
     w->tiles = std::make_unique<TileService>(std::move(data));
     const construction::WorldData& served = w->tiles->world().data();
-    w->cacheKey = served.cacheKey;
+    w->version = worldVersion(served);
     w->bounds = worldBounds(served);
     w->center = served.projectionCenter;
-    w->metadata = worldMetadataJson(id, served, w->tiles->scheme(tiling::SchemeKind::kLocal));
+    w->metadata =
+        worldMetadataJson(id, served, w->tiles->scheme(tiling::SchemeKind::kLocal), w->version);
     w->rivers = writeRiversAsync(served);
     w->features = featuresGeoJson(served.features);
     w->cesiumLayer =
         CesiumAvailability(w->bounds, w->tiles->scheme(tiling::SchemeKind::kGeographic).maxZoom())
-            .layerJson(id);
+            .layerJson(id, w->version);
     worlds_.push_back(std::move(w));
   }
 }
@@ -141,8 +145,9 @@ http::Response TileServer::tileJson(const ServedWorld& w, const http::Request& r
   const std::string base = origin.value() + "/worlds/" + w.id;
   http::Response r = jsonResponse(
       layer ? layerTileJson(w.id, base, kLayerNames[static_cast<std::size_t>(layer->name)],
-                            layerQuery(*layer), layerDescription(layer->name), w.bounds, w.center)
-            : app::tileJson(w.id, base, w.bounds, w.center),
+                            layerQuery(*layer), layerDescription(layer->name), w.bounds, w.center,
+                            w.version)
+            : app::tileJson(w.id, base, w.bounds, w.center, w.version),
       "tilejson");
   if (options_.publicUrl.empty()) // the URLs depend on these headers (from a trusted proxy)
     r.headers.emplace_back("Vary", "X-Forwarded-Proto, X-Forwarded-Host");
@@ -207,12 +212,18 @@ void TileServer::handleWorld(const ServedWorld& w, Endpoint endpoint, const Pars
   case Endpoint::kVectorTile:
   case Endpoint::kVegetationTile: {
     // Every kind of tile: its route's parser, then the one pipeline. An unknown layer or
-    // species is 404; any other refusal of the route is 400.
-    auto parsed = parseTileEndpoint(endpoint, w.id, target, request);
+    // species is 404; any other refusal of the route is 400. The world's version (`v`) is
+    // not the tile's: taken out before the parser, it decides only the Cache-Control.
+    ParsedTarget route = target;
+    const auto v = route.query.find("v");
+    const bool currentVersion = v != route.query.end() && v->second == w.version;
+    if (v != route.query.end())
+      route.query.erase(v);
+    auto parsed = parseTileEndpoint(endpoint, w.id, route, request);
     if (!parsed)
       return done(http::errorResponse(parsed.error().code == base::ErrorCode::kNotFound ? 404 : 400,
                                       parsed.error().message));
-    return tile(w, parsed.value(), request, std::move(done));
+    return tile(w, parsed.value(), request, currentVersion, std::move(done));
   }
   case Endpoint::kCesiumLayer:
     return done(jsonResponse(w.cesiumLayer, "cesium"));
@@ -230,10 +241,10 @@ void TileServer::handleWorld(const ServedWorld& w, Endpoint endpoint, const Pars
     const auto origin = requestOrigin(options_.publicUrl, request);
     if (!origin)
       return done(http::errorResponse(400, origin.error().message));
-    http::Response r =
-        jsonResponse(vectorTileJson(w.id, origin.value() + "/worlds/" + w.id, w.bounds.west,
-                                    w.bounds.south, w.bounds.east, w.bounds.north, w.center),
-                     "tilejson");
+    http::Response r = jsonResponse(vectorTileJson(w.id, origin.value() + "/worlds/" + w.id,
+                                                   w.bounds.west, w.bounds.south, w.bounds.east,
+                                                   w.bounds.north, w.center, w.version),
+                                    "tilejson");
     if (options_.publicUrl.empty()) // as tileJson(): the URLs depend on these headers
       r.headers.emplace_back("Vary", "X-Forwarded-Proto, X-Forwarded-Host");
     return done(std::move(r));
@@ -244,7 +255,7 @@ void TileServer::handleWorld(const ServedWorld& w, Endpoint endpoint, const Pars
 }
 
 void TileServer::tile(const ServedWorld& w, const TileRequest& tile, const http::Request& request,
-                      std::function<void(http::Response)> done) {
+                      bool currentVersion, std::function<void(http::Response)> done) {
   if (const base::Status inside = w.tiles->checkTile(tile); !inside) {
     // Refused before any work: labelled "error" in the metrics, as the router's refusals are.
     http::Response r = tileResponse(
@@ -259,14 +270,14 @@ void TileServer::tile(const ServedWorld& w, const TileRequest& tile, const http:
                          ? "Accept-Encoding"
                          : "";
   if (const std::string ifNoneMatch = request.header("if-none-match"); !ifNoneMatch.empty()) {
-    const std::string etag = tileEtag(w.cacheKey, key);
+    const std::string etag = tileEtag(w.version, key);
     if (etagMatches(ifNoneMatch, etag))
-      return done(notModified(etag, vary));
+      return done(notModified(etag, vary, currentVersion));
   }
   if (auto hit = cache_.find(key))
-    return done(tileResponse({std::move(hit), service::TileStatus::kOk, {}}));
+    return done(tileResponse({std::move(hit), service::TileStatus::kOk, {}}, currentVersion));
   const TileService* service = w.tiles.get();
-  auto compute = [this, service, tile, vary, etag = tileEtag(w.cacheKey, key)]() {
+  auto compute = [this, service, tile, vary, etag = tileEtag(w.version, key)]() {
     auto rendered = service->render(tile);
     trimmer_.noteActivity();
     if (!rendered)
@@ -278,8 +289,8 @@ void TileServer::tile(const ServedWorld& w, const TileRequest& tile, const http:
   };
   cache_.get(
       key, compute, [this](std::function<void()> work) { return pool_.submit(std::move(work)); },
-      [done = std::move(done)](const service::TileCache::Outcome& outcome) {
-        done(tileResponse(outcome));
+      [done = std::move(done), currentVersion](const service::TileCache::Outcome& outcome) {
+        done(tileResponse(outcome, currentVersion));
       },
       request.clientGone);
 }

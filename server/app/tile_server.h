@@ -75,9 +75,10 @@ private:
   http::Response tileJson(const ServedWorld& world, const http::Request& request,
                           const LayerOptions* layer = nullptr) const;
   /// The tile pipeline, after the route became a TileRequest: grid → 304 → cache (single
-  /// flight) → a worker's TileService::render → outcome → tileResponse().
+  /// flight) → a worker's TileService::render → outcome → tileResponse(). `currentVersion`:
+  /// the URL carried the world's version (immutable), else a short max-age.
   void tile(const ServedWorld& world, const TileRequest& tile, const http::Request& request,
-            std::function<void(http::Response)> done);
+            bool currentVersion, std::function<void(http::Response)> done);
   http::Response metricsResponse() const;
 
   std::vector<std::unique_ptr<ServedWorld>> worlds_;

@@ -343,7 +343,8 @@ std::string vectorLayersJson(int minZoom, int maxZoom) {
 }
 
 std::string vectorTileJson(const std::string& id, const std::string& base, double west,
-                           double south, double east, double north, Vec2 center) {
+                           double south, double east, double north, Vec2 center,
+                           const std::string& version) {
   using nlohmann::json;
   const json layers = json::parse(vectorLayersJson(0, tiling::TileScheme::kMaxWebZoom));
   const json tj = {{"tilejson", "3.0.0"},
@@ -352,7 +353,7 @@ std::string vectorTileJson(const std::string& id, const std::string& base, doubl
                    {"version", "1.0.0"},
                    {"scheme", "xyz"},
                    {"format", "pbf"},
-                   {"tiles", {base + "/vector/{z}/{x}/{y}.mvt"}},
+                   {"tiles", {base + "/vector/{z}/{x}/{y}.mvt?v=" + version}},
                    {"minzoom", 0},
                    {"maxzoom", tiling::TileScheme::kMaxWebZoom},
                    {"bounds", {west, south, east, north}},

@@ -95,8 +95,10 @@ vector_tile::Layer contoursLayer(std::span<const double> heights, int z);
 std::string vectorLayersJson(int minZoom, int maxZoom);
 
 /// The TileJSON 3.0.0 document of world `id`'s vector tiles under the absolute URL `base`
-/// (".../worlds/{id}"), with vector_layers (id, fields, minzoom, maxzoom).
+/// (".../worlds/{id}"), with vector_layers (id, fields, minzoom, maxzoom); its tile URLs carry
+/// the world's content `version` (`?v=`).
 std::string vectorTileJson(const std::string& id, const std::string& base, double west,
-                           double south, double east, double north, geometry::Vec2 center);
+                           double south, double east, double north, geometry::Vec2 center,
+                           const std::string& version);
 
 } // namespace strahler::app

@@ -11,8 +11,12 @@ constexpr int kTileJsonMaxZoom = 16; // DEM detail advertised; deeper tiles are 
 
 } // namespace
 
+std::string withVersion(const std::string& url, const std::string& version) {
+  return url + (url.find('?') == std::string::npos ? "?v=" : "&v=") + version;
+}
+
 std::string worldMetadataJson(const std::string& id, const construction::WorldData& data,
-                              const tiling::TileScheme& local) {
+                              const tiling::TileScheme& local, const std::string& version) {
   const LonLatBox b = worldBounds(data);
   const geometry::Aabb root = local.localBounds({0, 0, 0});
   const json metadata = {{"id", id},
@@ -27,6 +31,7 @@ std::string worldMetadataJson(const std::string& id, const construction::WorldDa
                          {"seed", data.params.seed},
                          {"generatorVersion", data.generatorVersion},
                          {"cacheKey", data.cacheKey},
+                         {"version", version},
                          {"web", {{"minzoom", 0}, {"maxzoom", tiling::TileScheme::kMaxWebZoom}}},
                          {"local",
                           {{"minzoom", 0},
@@ -48,13 +53,13 @@ std::string worldListJson(const std::vector<const std::string*>& metadata) {
 }
 
 std::string tileJson(const std::string& id, const std::string& base, const LonLatBox& bounds,
-                     geometry::Vec2 center) {
+                     geometry::Vec2 center, const std::string& version) {
   const json tj = {{"tilejson", "3.0.0"},
                    {"name", id},
                    {"description", "strahler terrain (Terrain-RGB heightmap)"},
                    {"version", "1.0.0"},
                    {"scheme", "xyz"},
-                   {"tiles", {base + "/tiles/{z}/{x}/{y}.png"}},
+                   {"tiles", {withVersion(base + "/tiles/{z}/{x}/{y}.png", version)}},
                    {"minzoom", 0},
                    {"maxzoom", kTileJsonMaxZoom},
                    {"bounds", {bounds.west, bounds.south, bounds.east, bounds.north}},
@@ -67,19 +72,21 @@ std::string tileJson(const std::string& id, const std::string& base, const LonLa
 
 std::string layerTileJson(const std::string& id, const std::string& base, const std::string& name,
                           const std::string& query, const std::string& description,
-                          const LonLatBox& bounds, geometry::Vec2 center) {
-  const json tj = {{"tilejson", "3.0.0"},
-                   {"name", id + " " + name},
-                   {"description", description},
-                   {"version", "1.0.0"},
-                   {"scheme", "xyz"},
-                   {"tiles", {base + "/layers/" + name + "/{z}/{x}/{y}.png" + query}},
-                   {"minzoom", 0},
-                   {"maxzoom", tiling::TileScheme::kMaxWebZoom},
-                   {"bounds", {bounds.west, bounds.south, bounds.east, bounds.north}},
-                   {"center", {center.x, center.y, 9}},
-                   {"tileSize", 256},
-                   {"attribution", "strahler"}};
+                          const LonLatBox& bounds, geometry::Vec2 center,
+                          const std::string& version) {
+  const json tj = {
+      {"tilejson", "3.0.0"},
+      {"name", id + " " + name},
+      {"description", description},
+      {"version", "1.0.0"},
+      {"scheme", "xyz"},
+      {"tiles", {withVersion(base + "/layers/" + name + "/{z}/{x}/{y}.png" + query, version)}},
+      {"minzoom", 0},
+      {"maxzoom", tiling::TileScheme::kMaxWebZoom},
+      {"bounds", {bounds.west, bounds.south, bounds.east, bounds.north}},
+      {"center", {center.x, center.y, 9}},
+      {"tileSize", 256},
+      {"attribution", "strahler"}};
   return tj.dump();
 }
 

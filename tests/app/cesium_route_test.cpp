@@ -151,13 +151,13 @@ TEST(CesiumAvailability, MetadataTilesCarryTheNextLevelsOfTheirDescendants) {
 }
 
 TEST(CesiumAvailability, LayerJsonHasWhatCesiumClientsRead) {
-  const auto layer =
-      nlohmann::json::parse(CesiumAvailability({2.3, 39.2, 3.5, 40.1}, 17).layerJson("mallorca"));
+  const auto layer = nlohmann::json::parse(
+      CesiumAvailability({2.3, 39.2, 3.5, 40.1}, 17).layerJson("mallorca", "0123456789abcdef"));
   EXPECT_EQ(layer["format"], "quantized-mesh-1.0");
   EXPECT_EQ(layer["scheme"], "tms");
   EXPECT_EQ(layer["projection"], "EPSG:4326");
   EXPECT_EQ(layer["tiles"][0], "{z}/{x}/{y}.terrain?v={version}");
-  EXPECT_EQ(layer["version"], "1.0.0");
+  EXPECT_EQ(layer["version"], "0123456789abcdef"); // the world's content version
   EXPECT_EQ(layer["minzoom"], 0);
   EXPECT_EQ(layer["maxzoom"], 17);
   EXPECT_EQ(layer["metadataAvailability"], 10);

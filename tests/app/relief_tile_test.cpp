@@ -142,7 +142,7 @@ TEST(ReliefTile, IsServedLikeEveryOtherTile) {
   test_support::Running s; // the default island as "island", two workers
   const std::uint16_t port = s.port();
   const std::string path = "/worlds/island/tiles/12/1736/1494.relief";
-  HttpResponse tile = get(port, path);
+  HttpResponse tile = get(port, test_support::versioned(port, path));
   ASSERT_EQ(tile.status, 200) << tile.body;
   EXPECT_EQ(tile.headers["content-type"], "image/png");
   EXPECT_EQ(tile.headers["access-control-allow-origin"], "*");

@@ -99,6 +99,21 @@ TEST(TileResponse, IfNoneMatchListsAndWildcardMatch) {
   EXPECT_EQ(header(r, "ETag"), etag);
   EXPECT_EQ(header(r, "Cache-Control"), "public, max-age=86400, immutable");
   EXPECT_TRUE(r.body.empty());
+  // Asked for without the world's current version: revalidated after a minute.
+  EXPECT_EQ(header(notModified(etag, "", false), "Cache-Control"),
+            "public, max-age=60, must-revalidate");
+}
+
+TEST(TileResponse, OnlyTheCurrentVersionIsImmutable) {
+  auto tile = std::make_shared<service::CachedTile>();
+  tile->bytes = "bytes";
+  tile->mimeType = "image/png";
+  tile->etag = "\"e\"";
+  const http::Response current = tileResponse({tile, TileStatus::kOk, {}}, true);
+  const http::Response other = tileResponse({tile, TileStatus::kOk, {}}, false);
+  EXPECT_EQ(header(current, "Cache-Control"), "public, max-age=86400, immutable");
+  EXPECT_EQ(header(other, "Cache-Control"), "public, max-age=60, must-revalidate");
+  EXPECT_EQ(header(other, "ETag"), "\"e\"");
 }
 
 } // namespace

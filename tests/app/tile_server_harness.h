@@ -41,16 +41,18 @@ inline HttpResponse request(std::uint16_t port, const std::string& target,
   return out;
 }
 
-/// A running server over the default island.
+/// A running server over the default island (or `world`, also served as "island").
 struct Running {
   TileServer tiles;
   http::Server server;
   explicit Running(std::size_t cacheBytes = 64u << 20, std::string publicUrl = "",
                    http::TrustedProxies trusted = {})
-      : tiles({{"island",
-                construction::generateWorldData(strahler::test_support::defaultIslandSpec(), "k")
-                    .value()}},
-              serverOptions(cacheBytes, std::move(publicUrl))),
+      : Running(construction::generateWorldData(strahler::test_support::defaultIslandSpec(), "k")
+                    .value(),
+                cacheBytes, std::move(publicUrl), std::move(trusted)) {}
+  explicit Running(construction::WorldData world, std::size_t cacheBytes = 64u << 20,
+                   std::string publicUrl = "", http::TrustedProxies trusted = {})
+      : tiles({{"island", std::move(world)}}, serverOptions(cacheBytes, std::move(publicUrl))),
         server(
             options(std::move(trusted)),
             [this](const http::Request& r, std::function<void(http::Response)> done) {
@@ -77,5 +79,24 @@ struct Running {
   }
   std::uint16_t port() const { return server.port(); }
 };
+
+/// The content version the server gives world `world` (its GET /worlds/{world} document's
+/// "version"), as a page that builds tile URLs reads it.
+inline std::string servedVersion(std::uint16_t port, const std::string& world = "island") {
+  const HttpResponse r = request(port, "/worlds/" + world);
+  EXPECT_EQ(r.status, 200) << r.body;
+  const std::string key = "\"version\":\"";
+  const auto at = r.body.find(key);
+  if (at == std::string::npos)
+    return "";
+  const auto from = at + key.size();
+  return r.body.substr(from, r.body.find('"', from) - from);
+}
+
+/// `path` with the served world's current version (`v`), as the server's own URLs carry it.
+inline std::string versioned(std::uint16_t port, const std::string& path,
+                             const std::string& world = "island") {
+  return path + (path.find('?') == std::string::npos ? "?v=" : "&v=") + servedVersion(port, world);
+}
 
 } // namespace strahler::app::test_support

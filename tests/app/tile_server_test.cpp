@@ -50,13 +50,19 @@ TEST(TileServer, EveryEndpointAnswers) {
         "/worlds/island/tiles/9/216/186.exr?size=64", "/worlds/island/local/2/1/2.drc",
         "/worlds/island/local/2/1/2.glb?size=16", "/worlds/island/local/0/0/0.png",
         "/worlds/island/local/0/0/0.glb", "/worlds/island/local/1/1/0.drc"}) {
-    auto tile = request(s.port(), path);
+    auto tile = request(s.port(), test_support::versioned(s.port(), path));
     EXPECT_EQ(tile.status, 200) << path << " " << tile.body;
     EXPECT_FALSE(tile.body.empty());
     EXPECT_EQ(tile.headers["access-control-allow-origin"], "*");
     EXPECT_EQ(tile.headers["cache-control"], "public, max-age=86400, immutable");
     EXPECT_NE(tile.headers["server-timing"].find("eval;dur="), std::string::npos);
     EXPECT_EQ(tile.headers["etag"].front(), '"');
+    // Without the world's version the same bytes, but only briefly cacheable.
+    auto unversioned = request(s.port(), path);
+    EXPECT_EQ(unversioned.status, 200) << path;
+    EXPECT_EQ(unversioned.body, tile.body) << path;
+    EXPECT_EQ(unversioned.headers["etag"], tile.headers["etag"]) << path;
+    EXPECT_EQ(unversioned.headers["cache-control"], "public, max-age=60, must-revalidate");
   }
   auto metrics = request(s.port(), "/metrics");
   EXPECT_NE(metrics.body.find("strahler_http_requests_total"), std::string::npos);
@@ -69,8 +75,9 @@ TEST(TileServer, TileJsonIsAMapLibreRasterDemSource) {
   ASSERT_EQ(r.status, 200);
   const auto tj = nlohmann::json::parse(r.body);
   EXPECT_EQ(tj["tilejson"], "3.0.0");
-  EXPECT_EQ(tj["tiles"][0], "http://127.0.0.1:" + std::to_string(s.port()) +
-                                "/worlds/island/tiles/{z}/{x}/{y}.png");
+  EXPECT_EQ(tj["tiles"][0],
+            "http://127.0.0.1:" + std::to_string(s.port()) +
+                "/worlds/island/tiles/{z}/{x}/{y}.png?v=" + test_support::servedVersion(s.port()));
   EXPECT_EQ(tj["minzoom"], 0);
   EXPECT_GE(tj["maxzoom"].get<int>(), 14);
   EXPECT_EQ(tj["encoding"], "mapbox");
@@ -95,14 +102,16 @@ TEST(TileServer, TileJsonNeverCopiesTheHostHeader) {
   {
     Running s;
     const std::string expected =
-        here + std::to_string(s.port()) + "/worlds/island/tiles/{z}/{x}/{y}.png";
+        here + std::to_string(s.port()) +
+        "/worlds/island/tiles/{z}/{x}/{y}.png?v=" + test_support::servedVersion(s.port());
     for (const char* host : {"evil.example", "evil.example:80", "127.0.0.1:1", "[::1]:8080"})
       EXPECT_EQ(tileJsonUrls(s.port(), host), std::vector<std::string>{expected}) << host;
   }
   Running s(64u << 20, "https://tiles.example.org/terrain");
   EXPECT_EQ(tileJsonUrls(s.port(), "evil.example"),
             std::vector<std::string>{
-                "https://tiles.example.org/terrain/worlds/island/tiles/{z}/{x}/{y}.png"});
+                "https://tiles.example.org/terrain/worlds/island/tiles/{z}/{x}/{y}.png?v=" +
+                test_support::servedVersion(s.port())});
 }
 
 /// The TileJSON of a request from this test (127.0.0.1) with `forwarded` header lines.
@@ -114,8 +123,12 @@ TEST(TileServer, TileJsonFollowsXForwardedHeadersOfATrustedProxyOnly) {
   const std::string path = "/worlds/island/tiles/{z}/{x}/{y}.png";
   const std::string headers =
       "X-Forwarded-Proto: https\r\nX-Forwarded-Host: Tiles.Example.org, inner.proxy\r\n";
+  // The URL without its world version (which the tests of world_version_test.cpp check).
   const auto tiles = [](const HttpResponse& r) {
-    return nlohmann::json::parse(r.body)["tiles"][0].get<std::string>();
+    const std::string url = nlohmann::json::parse(r.body)["tiles"][0].get<std::string>();
+    const auto v = url.find("?v=");
+    EXPECT_NE(v, std::string::npos) << url;
+    return url.substr(0, v);
   };
   {
     Running s(64u << 20, "", http::TrustedProxies::parse("loopback").value());
@@ -288,7 +301,7 @@ TEST(TileServer, ConditionalRequestsAndHead) {
 
 TEST(TileServer, CachedTilesCarryTheSameHeadersAsComputedOnes) {
   Running s;
-  const std::string path = "/worlds/island/tiles/10/433/373.png";
+  const std::string path = test_support::versioned(s.port(), "/worlds/island/tiles/10/433/373.png");
   const auto computed = request(s.port(), path);
   const auto cached = request(s.port(), path);
   const auto head = request(s.port(), path, "HEAD");

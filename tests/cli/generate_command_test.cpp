@@ -590,12 +590,17 @@ TEST(ServeCommand, ServesTilesAndStopsCleanlyOnSigterm) {
             "r");
   const auto tiles = nlohmann::json::parse(readLine(tileJson), nullptr, false);
   pclose(tileJson);
+  FILE* metadata =
+      popen(("curl -s http://127.0.0.1:" + std::to_string(port) + "/worlds/default").c_str(), "r");
+  const auto world = nlohmann::json::parse(readLine(metadata), nullptr, false);
+  pclose(metadata);
+  ASSERT_TRUE(world.is_object() && world["version"].is_string());
   EXPECT_EQ(tiles.is_object() ? tiles["tiles"] : nlohmann::json(),
             nlohmann::json::array({"http://127.0.0.1:" + std::to_string(port) +
-                                   "/worlds/default/tiles/{z}/{x}/{y}.png"}));
+                                   "/worlds/default/tiles/{z}/{x}/{y}.png?v=" +
+                                   world["version"].get<std::string>()}));
   EXPECT_EQ(status("/worlds/default/tiles/10/434/373.png"), "200");
   EXPECT_EQ(status("/worlds/default/tiles/40/0/0.png"), "404");
-  const auto start = std::chrono::steady_clock::now();
   ASSERT_EQ(::kill(pid, SIGTERM), 0);
   std::string rest;
   for (std::string line; !(line = readLine(pipe)).empty() || !std::feof(pipe);)

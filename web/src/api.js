@@ -20,6 +20,21 @@ export function worldUrl(world, path) {
   return new URL(`worlds/${encodeURIComponent(world.id)}/${path}`, location.href).href;
 }
 
+/**
+ * Absolute URL of a tile of a world: worldUrl() plus the world's content version (`v`, from
+ * GET /worlds), so that the URL names one content and may be cached for good; a regenerated
+ * world has another version, so its tiles have other URLs.
+ */
+export function tileUrl(world, path) {
+  return withVersion(worldUrl(world, path), world);
+}
+
+/** `url` (a URL or a URL template) with the world's content version as its `v` parameter. */
+export function withVersion(url, world) {
+  if (!world.version) return url;
+  return `${url}${url.includes('?') ? '&' : '?'}v=${encodeURIComponent(world.version)}`;
+}
+
 /** Remembers the chosen world in the address bar, so that a reload keeps it. */
 export function rememberWorld(world) {
   const url = new URL(location.href);

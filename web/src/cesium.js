@@ -7,7 +7,7 @@ import {
   BoundingSphere, Cartesian3, Cartographic, CesiumTerrainProvider, Color, EllipsoidTerrainProvider, HeadingPitchRange, ImageryLayer,
   JulianDate, Math as CesiumMath, Rectangle, UrlTemplateImageryProvider, Viewer,
 } from 'cesium';
-import { loadWorlds, rememberWorld, worldUrl } from './api.js';
+import { loadWorlds, rememberWorld, withVersion, worldUrl } from './api.js';
 import { TileTimings, observeResourceTimings, showTimings } from './tile-timing.js';
 
 const $ = (id) => document.getElementById(id);
@@ -20,7 +20,8 @@ export const CESIUM_TERRAIN = 'cesium/';
 
 /** Draped imagery: the world's relief tiles when the server has them (a probe tile), else none. */
 async function reliefLayer(world) {
-  const template = worldUrl(world, '') + RELIEF_TILES; // worldUrl() would escape the braces
+  // worldUrl() would escape the braces; the version makes the URLs those of this world's content.
+  const template = withVersion(worldUrl(world, '') + RELIEF_TILES, world);
   const probe = await fetch(template.replace('{z}', '0').replace('{x}', '0').replace('{y}', '0'));
   if (!probe.ok) return null;
   const provider = new UrlTemplateImageryProvider({

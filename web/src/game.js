@@ -5,7 +5,7 @@
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { DRACOLoader } from 'three/addons/loaders/DRACOLoader.js';
-import { loadWorlds, worldUrl } from './api.js';
+import { loadWorlds, tileUrl } from './api.js';
 import { FlyControls } from './fly-controls.js';
 import { createTerrainMaterial } from './terrain-material.js';
 import { TileStreamer } from './tile-streamer.js';
@@ -18,7 +18,7 @@ function createLoader(world, terrain) {
   const draco = new DRACOLoader().setDecoderPath(new URL('../vendor/three/draco/', import.meta.url).href);
   const gltf = new GLTFLoader().setDRACOLoader(draco);
   return async (z, x, y) => {
-    const { scene } = await gltf.loadAsync(worldUrl(world, `local/${z}/${x}/${y}.glb?size=${GRID_SIZE}`));
+    const { scene } = await gltf.loadAsync(tileUrl(world, `local/${z}/${x}/${y}.glb?size=${GRID_SIZE}`));
     scene.traverse((object) => {
       if (!object.isMesh) return;
       object.material.dispose(); // the tile's own default material; all tiles share ours
@@ -68,7 +68,7 @@ async function main() {
   const streamer = new TileStreamer(world, createLoader(world, terrain), { gridSize: GRID_SIZE });
   scene.add(streamer.group);
   const controls = new FlyControls(camera, canvas);
-  const vegetation = new VegetationLayer(world, (path) => worldUrl(world, path));
+  const vegetation = new VegetationLayer(world, (path) => tileUrl(world, path));
   scene.add(vegetation.group);
 
   // The height of the loaded terrain under (x, z), or null where no tile is loaded yet.

@@ -94,11 +94,15 @@ export function colourTable(overlay) {
   return tables.get(overlay.id);
 }
 
-/** The overlay whose tiles `url` names (…/layers/{name}/{z}/{x}/{y}.png[?species=…]), or null. */
+/** The overlay whose tiles `url` names (…/layers/{name}/{z}/{x}/{y}.png[?species=…][&v=…]), or null. */
 export function overlayOfUrl(url) {
   const match = /\/layers\/([a-z]+)\/\d+\/\d+\/\d+\.png(\?[^#]*)?$/.exec(url);
   if (!match) return null;
-  const [, layer, query = ''] = match;
+  const [, layer, given = ''] = match;
+  // The world's version (`v`, which the TileJSON's tile URLs carry) does not name the overlay.
+  const params = new URLSearchParams(given);
+  params.delete('v');
+  const query = params.toString() ? `?${params}` : '';
   return OVERLAYS.find((o) => o.layer === layer && (o.query === query || (!query && o.query === '?species=tree'))) ?? null;
 }
 

@@ -33,6 +33,18 @@ function assertNoErrors(record, origin = server.url) {
 
 let server, browser;
 
+// Every tile URL a page fetches carries the world's content version (`v`, from GET /worlds), so
+// that caches may keep it for good and a regenerated world's tiles have other URLs.
+async function assertVersioned(responses, what) {
+  const worlds = await (await fetch(`${server.url}/worlds`)).json();
+  const versions = new Set(worlds.map((w) => w.version));
+  assert.ok(versions.size === worlds.length && !versions.has(undefined), 'GET /worlds names each version');
+  for (const r of responses) {
+    assert.ok(versions.has(new URL(r.url.replace(/^[a-z]+:\/\/(?=https?:)/, '')).searchParams.get('v')),
+      `${what} without the world's version: ${r.url}`);
+  }
+}
+
 // Waits for window.strahlerMap, then until it is idle: style and every tile loaded, no transition.
 async function waitForIdleMap(page) {
   await page.waitForFunction(() => window.strahlerMap, null, { timeout: STEP_MS });
@@ -91,16 +103,17 @@ describe('map viewer', () => {
 
   after(() => page?.close());
 
-  test('loads its tiles, TileJSON and rivers without errors', () => {
+  test('loads its tiles, TileJSON and rivers without errors', async () => {
     assertNoErrors(record);
     const of = (pattern) => record.responses.filter((r) => pattern.test(r.url));
     assert.ok(of(/\/worlds$/).length === 1, 'GET /worlds');
     assert.ok(of(/\/tilejson\.json$/).length >= 1, 'GET tilejson.json');
     assert.ok(of(/\/rivers\.geojson$/).length === 1, 'GET rivers.geojson');
     assert.equal(of(/\/rivers\.geojson$/)[0].encoding, 'gzip', 'rivers.geojson comes gzipped');
-    const tiles = of(/\/tiles\/\d+\/\d+\/\d+\.png$/);
+    const tiles = of(/\/tiles\/\d+\/\d+\/\d+\.png(\?|$)/);
     assert.ok(tiles.length >= 1, 'no heightmap tile was requested');
     for (const tile of tiles) assert.match(tile.type, /^image\/png/, tile.url);
+    await assertVersioned(tiles, 'a heightmap tile');
   });
 
   test('has 3D terrain, colour relief, hillshade and the river layer', async () => {
@@ -326,9 +339,10 @@ describe('map viewer layers, contours and rivers from the vector tiles (?rivers=
 
   test('draws the rivers of the vector tiles, not rivers.geojson', async () => {
     assertNoErrors(record);
-    const mvt = record.responses.filter((r) => /\/vector\/\d+\/\d+\/\d+\.mvt$/.test(r.url));
+    const mvt = record.responses.filter((r) => /\/vector\/\d+\/\d+\/\d+\.mvt(\?|$)/.test(r.url));
     assert.ok(mvt.length >= 1, 'no vector tile was requested');
     for (const tile of mvt) assert.equal(tile.status, 200, tile.url);
+    await assertVersioned(mvt, 'a vector tile');
     assert.equal(record.responses.filter((r) => /rivers\.geojson/.test(r.url)).length, 0, 'fetched rivers.geojson');
     const state = await page.evaluate(() => {
       const map = window.strahlerMap;
@@ -375,7 +389,8 @@ describe('map viewer layers, contours and rivers from the vector tiles (?rivers=
     for (const name of ['slope', 'illumination', 'humidity', 'vegetation', 'water']) {
       assert.ok(tiles.some((t) => t.url.includes(`/layers/${name}/`)), `no ${name} tile was requested`);
     }
-    assert.ok(tiles.some((t) => t.url.endsWith('?species=bush')), 'no bush tile was requested');
+    assert.ok(tiles.some((t) => new URL(t.url).searchParams.get('species') === 'bush'), 'no bush tile was requested');
+    await assertVersioned(tiles, 'a layer tile');
     assertNoErrors(record);
   });
 
@@ -439,6 +454,7 @@ describe('game client', () => {
     const meshes = record.responses.filter((r) => /\/local\/\d+\/\d+\/\d+\.glb/.test(r.url));
     assert.ok(meshes.length >= 1, 'no mesh tile was requested');
     for (const mesh of meshes) assert.match(mesh.type, /^model\/gltf-binary/, mesh.url);
+    await assertVersioned(meshes, 'a mesh tile');
     const s = await stats();
     assert.ok(s.loaded >= 1 && s.visible >= 1 && s.failed === 0, JSON.stringify(s));
     const minZoom = await page.evaluate(() => window.strahlerGame.streamer.minZoom);

@@ -57,11 +57,16 @@ async function waitForSettledGlobe(page) {
   }, null, { timeout: STEP_MS, polling: 200 });
 }
 
+// The test's own server (web/tests/lib/server.mjs) always serves colour-relief tiles: the page
+// must drape them. Only a server under test from outside (STRAHLER_TEST_SERVER) may lack them.
+const OWN_SERVER = !process.env.STRAHLER_TEST_SERVER;
+
 // No console error, no HTTP error, and nothing fetched from anywhere but our server (offline, no Ion).
 // A server without colour-relief tiles answers the page's one probe for them with an error (the
-// page then shows the terrain without imagery): that answer alone is allowed, and only then.
+// page then shows the terrain without imagery): that answer alone is allowed, only then, and
+// never from the test's own server.
 function assertNoErrors(record, relief) {
-  const probe = (text) => !relief && /\/tiles\/0\/0\/0\.relief/.test(text);
+  const probe = (text) => !OWN_SERVER && !relief && /\/tiles\/0\/0\/0\.relief/.test(text);
   assert.deepEqual(record.errors.filter((e) => !probe(e)), [], 'console errors, exceptions or failed requests');
   assert.deepEqual(record.responses.filter((r) => r.status >= 400 && !probe(r.url)), [], 'HTTP error responses');
   const foreign = record.responses.filter((r) => !r.url.startsWith(`${server.url}/`) && !/^(data|blob):/.test(r.url));
@@ -92,9 +97,13 @@ describe('Cesium page', () => {
 
   test('loads layer.json and quantized-mesh tiles from our server only, without errors', async () => {
     assertNoErrors(record, relief);
+    if (OWN_SERVER) assert.equal(relief, true, 'the relief probe failed on a server that serves relief');
+    const { version } = (await (await fetch(`${server.url}/worlds`)).json())[0];
     if (relief) {
       const imagery = record.responses.filter((r) => /\/tiles\/\d+\/\d+\/\d+\.relief/.test(r.url));
       assert.ok(imagery.length >= 2 && imagery.every((r) => r.status === 200 && /^image\/png/.test(r.type)), JSON.stringify(imagery.slice(0, 3)));
+      // Every URL carries the world's content version, so caches may keep the tiles for good.
+      for (const r of imagery) assert.equal(new URL(r.url).searchParams.get('v'), version, r.url);
     }
     const layer = record.responses.filter((r) => /\/worlds\/[^/]+\/cesium\/layer\.json$/.test(r.url));
     assert.equal(layer.length, 1, 'GET layer.json');
@@ -103,6 +112,7 @@ describe('Cesium page', () => {
     for (const r of terrain) {
       assert.equal(r.status, 200, r.url);
       assert.equal(r.type, 'application/vnd.quantized-mesh', r.url);
+      assert.equal(new URL(r.url).searchParams.get('v'), version, r.url); // layer.json's {version}
     }
     const state = await page.evaluate(() => {
       const { viewer } = window.strahlerCesium;
