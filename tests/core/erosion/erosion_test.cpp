@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace strahler::erosion {
@@ -116,6 +117,105 @@ TEST(Erosion, SameBytesWithOneAndTwoThreads) {
   EXPECT_EQ(a.value().bedrock, c.value().bedrock);
   EXPECT_EQ(a.value().sediment, c.value().sediment);
   EXPECT_EQ(a.value().finalSweeps, b.value().finalSweeps);
+}
+
+/// A ramp `width` × `rows` falling 2 m per 10 m sample eastwards (tan β = 0.2), level north to
+/// south: h = 100 − 2x.
+std::vector<double> ramp(int width, int rows) {
+  std::vector<double> h;
+  for (int y = 0; y < rows; ++y)
+    for (int x = 0; x < width; ++x)
+      h.push_back(100.0 - 2.0 * x);
+  return h;
+}
+
+/// One round of one process, and a talus so steep (89.9°: 5.7 km per 10 m) that the
+/// stabilisation moves nothing: what is left is that process's own step.
+Params oneRoundOf(bool thermal, bool hydraulic) {
+  Params p;
+  p.iterations = 1;
+  p.thermal = thermal;
+  p.hydraulic = hydraulic;
+  p.talusDegrees = 89.9;
+  return p;
+}
+
+TEST(Erosion, ThermalAloneWeathersRateTimesSlopeTimesIlluminationInPlace) {
+  // Seed §1.3.1 by hand: every cell turns T·tanβ·I of bedrock into sediment where it stands
+  // (T = thermalRate = 1 m). tan β by central differences with the edges repeated: 0.2 inside,
+  // 0.1 in the first and last columns (half a step each way). I is the seed's illumination of
+  // the input (illuminationMap, a map of its own); nothing moves, so the surface is unchanged.
+  constexpr int kWidth = 8, kRows = 5;
+  const std::vector<double> h = ramp(kWidth, kRows);
+  auto r = erode(h, kWidth, kRows, kSpacing, oneRoundOf(true, false));
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  const Layers& l = r.value();
+  const std::vector<double> light = illuminationMap(h, kWidth, kRows, kSpacing, 1);
+  int shaded = 0;
+  for (int y = 0; y < kRows; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y * kWidth + x);
+      const double tanBeta = (x == 0 || x == kWidth - 1) ? 0.1 : 0.2;
+      const double weathered = 1.0 * tanBeta * light[i];
+      EXPECT_NEAR(l.sediment[i], weathered, 1e-12) << x << "," << y;
+      EXPECT_NEAR(l.bedrock[i], h[i] - weathered, 1e-12) << x << "," << y;
+      EXPECT_NEAR(l.bedrock[i] + l.sediment[i], h[i], 1e-12) << x << "," << y;
+      shaded += light[i] < 0.999 ? 1 : 0;
+    }
+  EXPECT_GT(shaded, 0) << "the ramp's own slope hides part of the sky";
+  EXPECT_GT(l.sediment[static_cast<std::size_t>(2 * kWidth + 3)], 0.1);
+}
+
+TEST(Erosion, HydraulicAloneCarriesTheHandWorkedLoadsOneCellDownhill) {
+  // Seed §1.3.2 on a two-row ramp, by hand. Humidity: every cell starts with 1 m³ of water and
+  // passes it to its lower neighbours (east 0.2 m/m, south- or north-east 0.2/√2), whose
+  // shares sum to 1, so column x collects x + 1 and H(x) = ln(x + 1) / ln 8. tan β: 0.2 inside,
+  // 0.1 at the ends. Each cell's load Qa = min(T·H·tanβ, half the 2 m drop) with T = 2 goes to
+  // its steepest-descent neighbour, the one east; the last column has none. Sediment is zero
+  // before, so the load comes out of the bedrock.
+  constexpr int kWidth = 8, kRows = 2;
+  const std::vector<double> h = ramp(kWidth, kRows);
+  auto r = erode(h, kWidth, kRows, kSpacing, oneRoundOf(false, true));
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  const Layers& l = r.value();
+  const auto load = [](int x) {
+    if (x == kWidth - 1)
+      return 0.0; // no lower neighbour
+    const double tanBeta = x == 0 ? 0.1 : 0.2;
+    return std::min(2.0 * std::log(x + 1.0) / std::log(8.0) * tanBeta, 1.0);
+  };
+  EXPECT_NEAR(load(1), 0.4 / 3.0, 1e-15);       // ln 2 / ln 8 = 1/3
+  EXPECT_NEAR(load(3), 0.4 * 2.0 / 3.0, 1e-15); // ln 4 / ln 8 = 2/3
+  for (int y = 0; y < kRows; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y * kWidth + x);
+      EXPECT_NEAR(l.bedrock[i], h[i] - load(x), 1e-9) << x << "," << y;
+      EXPECT_NEAR(l.sediment[i], x == 0 ? 0.0 : load(x - 1), 1e-9) << x << "," << y;
+    }
+}
+
+TEST(Erosion, NoProcessChangesNothingAndEachAloneDiffersFromBoth) {
+  const std::vector<double> h = cone();
+  Params none = oneRoundOf(false, false);
+  none.talusDegrees = 45.0;
+  auto still = erode(h, kSize, kSize, kSpacing, none);
+  ASSERT_TRUE(still.ok());
+  EXPECT_EQ(still.value().bedrock, h);
+  double sediment[3] = {};
+  int k = 0;
+  for (const auto& [thermal, hydraulic] : {std::pair{true, false}, {false, true}, {true, true}}) {
+    Params p;
+    p.iterations = 5;
+    p.thermal = thermal;
+    p.hydraulic = hydraulic;
+    auto r = erode(h, kSize, kSize, kSpacing, p);
+    ASSERT_TRUE(r.ok());
+    sediment[k++] = sum(r.value().sediment);
+  }
+  EXPECT_GT(sediment[0], 1.0);
+  EXPECT_GT(sediment[1], 1.0);
+  EXPECT_NE(sediment[0], sediment[2]);
+  EXPECT_NE(sediment[1], sediment[2]);
 }
 
 TEST(Erosion, RejectsBadParameters) {
