@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <spng.h>
@@ -136,6 +137,47 @@ TEST(LayerRoute, BadInputGetsADefiniteStatusAndMessage) {
   EXPECT_FALSE(parse("slope", {}, "04.png").ok());
 }
 
+/// Pixels of a water tile (0 or 255: asserted) by the height of the same tile's 16-bit
+/// heightmap at them: below −5 m (sea floor), above 5 m (land), and how many of each are wet.
+struct WaterCount {
+  int sea = 0, seaWet = 0, land = 0, landWet = 0;
+};
+
+WaterCount countWater(const tiling::TileId& tile) {
+  const Grey water = render(layerRequest(LayerName::kWater, tile));
+  TileRequest png16;
+  png16.format = TileFormat::kPng16;
+  png16.tile = tile;
+  const Grey heights = render(png16);
+  WaterCount n;
+  EXPECT_GT(water.width, 1u);
+  EXPECT_GT(heights.width, 1u);
+  // The heightmap's sample nearest a pixel (the two grids need not be the same size).
+  const auto near = [](std::uint32_t i, std::uint32_t from, std::uint32_t to) {
+    return static_cast<std::uint32_t>((i + 0.5) * to / from);
+  };
+  for (std::uint32_t y = 0; y < water.height; ++y)
+    for (std::uint32_t x = 0; x < water.width; ++x) {
+      const std::uint16_t s = water.samples[y * water.width + x];
+      EXPECT_TRUE(s == 0 || s == 255) << s;
+      const double h = heights.samples[near(y, water.height, heights.height) * heights.width +
+                                       near(x, water.width, heights.width)] /
+                           10.0 -
+                       1000.0;
+      if (h < -5.0) {
+        ++n.sea;
+        n.seaWet += s == 255;
+      } else if (h > 5.0) {
+        ++n.land;
+        n.landWet += s == 255;
+      }
+    }
+  std::printf("water tile %d/%d/%d: sea %d (wet %d), land %d (wet %d)\n", tile.z,
+              static_cast<int>(tile.x), static_cast<int>(tile.y), n.sea, n.seaWet, n.land,
+              n.landWet);
+  return n;
+}
+
 TEST(LayerTile, EachLayerHasItsDocumentedEncoding) {
   for (std::size_t i = 0; i < std::size(kLayerNames); ++i) {
     const auto name = static_cast<LayerName>(i);
@@ -157,10 +199,20 @@ TEST(LayerTile, EachLayerHasItsDocumentedEncoding) {
   // Sediment in centimetres, at most Sediment::kMaxM.
   for (std::uint16_t s : render(layerRequest(LayerName::kSediment, kHills)).samples)
     ASSERT_LE(s, 200);
-  // Water: 0 or 255, and the tile has rivers (or sea) somewhere at a zoom where they show.
-  const Grey water = render(layerRequest(LayerName::kWater, {10, 434, 373}));
-  for (std::uint16_t s : water.samples)
-    ASSERT_TRUE(s == 0 || s == 255) << s;
+  // Water: 0 or 255; wet where the same tile's 16-bit heightmap (height = v / 10 − 1000 m, a
+  // renderer of its own) is sea floor, and along the rivers on land; dry on most land. Two
+  // z14 tiles (rivers show where they are at least a pixel, 9 m, wide): one at a river mouth,
+  // one inland.
+  const WaterCount mouth = countWater({14, 6953, 5969});
+  EXPECT_GT(mouth.sea, 1000) << "the tile holds sea";
+  EXPECT_GE(mouth.seaWet, 0.98 * mouth.sea) << "the sea is water (up to the shore's pixels)";
+  EXPECT_GT(mouth.land, 1000) << "the tile holds land";
+  EXPECT_GT(mouth.landWet, 20) << "the river's mouth is water on the land";
+  EXPECT_LT(mouth.landWet, mouth.land / 4) << "most of the land is dry";
+  const WaterCount inland = countWater({14, 6949, 5969});
+  EXPECT_EQ(inland.sea, 0) << "an inland tile";
+  EXPECT_GT(inland.landWet, 200) << "rivers show as water on the land";
+  EXPECT_LT(inland.landWet, inland.land / 4) << "most of the land is dry";
 }
 
 TEST(LayerTile, TilesAreCutsOfTheirParentSoNeighboursAgreeAlongTheirEdges) {
