@@ -129,34 +129,104 @@ TEST(Folds, WithoutMountainsTheWorldIsUnchanged) {
   }
 }
 
+/// Where the plates meet, computed here from the mountains alone: a point's cell is its
+/// nearest mountain's (the plates' Voronoi partition), and its distance to the boundary with
+/// mountain j's cell is at least its distance to their bisector, (|p − m_j|² − |p − m_i|²) /
+/// (2 |m_j − m_i|). The plates (which cells merged) and their velocities are World's.
+struct PlateGeometry {
+  std::vector<Vec2> mountains;
+  std::vector<std::uint32_t> plateOf;
+  std::vector<Vec2> velocity;
+
+  explicit PlateGeometry(const World& world) {
+    for (const input::MountainFeature& m : world.data().features.mountains)
+      mountains.push_back(m.position);
+    plateOf = world.plates()->plateOf;
+    velocity = world.plates()->velocity;
+  }
+  std::size_t cellOf(Vec2 p) const {
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < mountains.size(); ++k)
+      if (geometry::lengthSquared(p - mountains[k]) < geometry::lengthSquared(p - mountains[best]))
+        best = k;
+    return best;
+  }
+  double bisectorDistance(Vec2 p, std::size_t i, std::size_t j) const {
+    return (geometry::lengthSquared(p - mountains[j]) - geometry::lengthSquared(p - mountains[i])) /
+           (2.0 * geometry::length(mountains[j] - mountains[i]));
+  }
+  /// A lower bound of p's distance to any boundary of its plate with another plate.
+  double plateBoundaryDistance(Vec2 p) const {
+    const std::size_t i = cellOf(p);
+    double d = 1e300;
+    for (std::size_t j = 0; j < mountains.size(); ++j)
+      if (plateOf[j] != plateOf[i])
+        d = std::min(d, bisectorDistance(p, i, j));
+    return d;
+  }
+};
+
 TEST(Folds, FoldTheReliefNearConvergentBoundariesOnly) {
   const World& folded = foldedWorld();
   const World& flat = flatWorld();
-  std::size_t folds = 0, changed = 0, unfolded = 0;
-  double worst = 0.0, sum = 0.0;
+  const PlateGeometry plates(folded);
+  const double reach = folded.plates()->foldReach;
+  ASSERT_GT(reach, 0.0);
+  // Far from every plate boundary (beyond the reach, plus two of World's 500 m fold nodes for
+  // its grid and its interpolation): not a bit changes.
+  constexpr double kNodes = 2.0 * 1.5 * 500.0;
+  std::size_t far = 0;
   for (const Vec2 p : landPoints(folded, 500.0)) {
-    const double a = folded.height(p, 30.0), b = flat.height(p, 30.0);
-    const double strength = folded.foldStrength(p);
-    if (strength == 0.0) { // no fold: the same bits
-      ASSERT_EQ(std::memcmp(&a, &b, sizeof a), 0) << p.x << ", " << p.y;
-      ++unfolded;
+    if (plates.plateBoundaryDistance(p) <= reach + kNodes)
       continue;
-    }
-    if (strength > 0.25) {
-      ++folds;
-      changed += a != b;
-      sum += std::abs(a - b);
-    }
-    worst = std::max(worst, std::abs(a - b));
+    const double a = folded.height(p, 30.0), b = flat.height(p, 30.0);
+    ASSERT_EQ(std::memcmp(&a, &b, sizeof a), 0) << p.x << ", " << p.y;
+    ++far;
   }
-  std::printf(
-      "folded samples %zu (changed %zu), unfolded %zu; mean |fold| %.1f m, largest %.1f m\n", folds,
-      changed, unfolded, sum / static_cast<double>(folds), worst);
-  ASSERT_GT(folds, 1000u);
-  EXPECT_GT(unfolded, 1000u);
-  EXPECT_GT(changed, folds * 9 / 10);
+  // Across each boundary where the plates close in ((v_i − v_j) · n > 0.5, n the unit step from
+  // mountain i towards j), 0.3 to 0.6 of the reach inside either plate and away from every other
+  // boundary: the relief is folded there.
+  std::size_t near = 0, changed = 0, boundaries = 0;
+  double sum = 0.0, worst = 0.0;
+  for (std::size_t i = 0; i < plates.mountains.size(); ++i)
+    for (std::size_t j = 0; j < plates.mountains.size(); ++j) {
+      if (plates.plateOf[i] == plates.plateOf[j])
+        continue;
+      const Vec2 n = (plates.mountains[j] - plates.mountains[i]) /
+                     geometry::length(plates.mountains[j] - plates.mountains[i]);
+      const Vec2 closing = plates.velocity[plates.plateOf[i]] - plates.velocity[plates.plateOf[j]];
+      const Vec2 middle = (plates.mountains[i] + plates.mountains[j]) * 0.5;
+      bool meet = true; // no third mountain nearer the middle: their cells meet there
+      for (std::size_t k = 0; k < plates.mountains.size(); ++k)
+        meet = meet && (k == i || k == j ||
+                        geometry::lengthSquared(middle - plates.mountains[k]) >
+                            geometry::lengthSquared(middle - plates.mountains[i]));
+      if (geometry::dot(closing, n) <= 0.5 || !meet)
+        continue;
+      ++boundaries;
+      const Vec2 side{-n.y, n.x};
+      for (double t = -0.6; t <= -0.3; t += 0.05)
+        for (double s = -2000.0; s <= 2000.0; s += 250.0) {
+          const Vec2 p = middle + n * (t * reach) + side * s;
+          if (!folded.land().contains(p) || plates.cellOf(p) != i ||
+              plates.plateBoundaryDistance(p) < 0.25 * reach + kNodes)
+            continue;
+          const double a = folded.height(p, 30.0), b = flat.height(p, 30.0);
+          ++near;
+          changed += a != b;
+          sum += std::abs(a - b);
+          worst = std::max(worst, std::abs(a - b));
+        }
+    }
+  std::printf("fold reach %.0f m; %zu samples far from the plate boundaries; %zu near %zu "
+              "converging boundaries (changed %zu), mean |fold| %.1f m, largest %.1f m\n",
+              reach, far, near, boundaries, changed, sum / static_cast<double>(near), worst);
+  EXPECT_GT(far, 1000u);
+  ASSERT_GE(boundaries, 1u);
+  ASSERT_GT(near, 20u);
+  EXPECT_GT(changed, near * 9 / 10);
   // Tens of metres on average, at most a few hundred (TectonicFolds: amplitude and slope cap).
-  EXPECT_GT(sum / static_cast<double>(folds), 3.0);
+  EXPECT_GT(sum / static_cast<double>(near), 3.0);
   EXPECT_LT(worst, 600.0);
 }
 
@@ -252,33 +322,6 @@ TEST(Folds, DrainageHoldsWithFolds) {
   EXPECT_GT(rivers.samples, 10000u);
   EXPECT_EQ(rivers.violations, 0u) << "worst rise " << rivers.worstRise << " m at "
                                    << rivers.worstAt.x << ", " << rivers.worstAt.y;
-}
-
-TEST(Folds, TileCostWithAndWithoutFolds) {
-  // Not a wall-time assertion: the cost of zoom 12 tiles over the folds, for the record.
-  const Peak& oro = kPeaks[2];
-  const tiling::TileId centre = test_support::webTileAt(oro.lon, oro.lat, 12);
-  std::vector<tiling::SampleGrid> grids;
-  for (int dy = -2; dy <= 2; ++dy)
-    for (int dx = -2; dx <= 2; ++dx)
-      grids.push_back(webScheme().rasterGrid({12, centre.x + dx, centre.y + dy}, 256));
-  const auto cost = [&](const World& world) {
-    const tiling::TileEvaluator evaluator(world);
-    double best = 1e300;
-    for (int round = 0; round < 3; ++round) {
-      const auto start = std::chrono::steady_clock::now();
-      for (const tiling::SampleGrid& g : grids)
-        evaluator.evaluate(g);
-      const std::chrono::duration<double, std::milli> took =
-          std::chrono::steady_clock::now() - start;
-      best = std::min(best, took.count() / static_cast<double>(grids.size()));
-    }
-    return best;
-  };
-  const double with = cost(foldedWorld()), without = cost(flatWorld());
-  std::printf("zoom 12 256² tile: %.2f ms with folds, %.2f ms without (×%.2f)\n", with, without,
-              with / without);
-  EXPECT_GT(with, 0.0);
 }
 
 } // namespace
