@@ -249,11 +249,19 @@ bool layerTiles(const app::TileService& service, const fs::path& dir, tiling::Sc
     if (!rendered)
       return false;
     const std::string file = name + "." + sample.label;
+    // Slope and hillshade also get the bordered heights, from which check_layers.mjs computes
+    // them itself (not through core/layers).
+    const bool own =
+        sample.layer == app::LayerName::kSlope || sample.layer == app::LayerName::kHillshade;
+    const std::string input = own ? ",\"border\":" + std::to_string(border) +
+                                        ",\"rowSpacing\":" + array(grid.rowSpacing) +
+                                        ",\"heights\":" + array(heights)
+                                  : "";
     const std::string json = "{\"width\":" + std::to_string(size) +
                              ",\"height\":" + std::to_string(size) +
                              ",\"depth\":" + std::to_string(sample.depth) + ",\"east\":\"" +
                              (east.empty() ? "" : east + "." + sample.label) +
-                             "\",\"expected\":" + array(sample.expected) + "}\n";
+                             "\",\"expected\":" + array(sample.expected) + input + "}\n";
     if (!write(dir / (file + ".png"), rendered.value().bytes) ||
         !write(dir / (file + ".json"), json))
       return false;

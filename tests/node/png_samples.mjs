@@ -39,9 +39,10 @@ function largestInsideStep(tile) {
  * { problems, tile (seamTile), maxError, east }; then each sample whose `east` neighbour was
  * written must join it without a seam: the mean step across the shared edge no larger than the
  * largest step between two columns inside either tile. Prints a line per check and exits 1 on
- * any failure, or when there were no samples or no neighbours. `what` names the tiles.
+ * any failure, or when there were no samples or no neighbours. `what` names the tiles;
+ * `finalCheck()` returns the problems left after every sample was read (none by default).
  */
-export async function runPngSamples(what, checkSample) {
+export async function runPngSamples(what, checkSample, finalCheck = () => []) {
   const dir = process.argv[2];
   if (!dir || !fs.existsSync(dir)) {
     console.error(`FAIL: sample folder "${dir ?? ""}" not found (run write_world_tile_samples first)`);
@@ -90,6 +91,10 @@ export async function runPngSamples(what, checkSample) {
   if (names.length === 0 || seams === 0) {
     console.error(`FAIL: no ${what} samples (or no neighbours) in ${dir}`);
     process.exit(1);
+  }
+  for (const problem of finalCheck()) {
+    console.log(`FAIL ${problem}`);
+    ++failures;
   }
   console.log(`${names.length - failures}/${names.length} ${what} tiles decode as expected`);
   process.exit(failures === 0 ? 0 : 1);
