@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <string_view>
 
@@ -11,6 +12,19 @@ namespace strahler::test_support {
 inline bool runningInCi() {
   const char* ci = std::getenv("CI");
   return ci != nullptr && std::string_view(ci) == "true";
+}
+
+/// Says that this machine lacks `what` (an instruction set, e.g. "AVX-512"), so `test` leaves
+/// that path unchecked here: never a silent skip. Under CI=true the line also goes to stderr,
+/// which CI's log keeps; the portable build (scripts/test-portable.sh) checks the portable path.
+inline void noteMissingHardware(std::string_view test, std::string_view what) {
+  std::printf("[ MISSING  ] %.*s: this machine lacks %.*s; that path is not checked here\n",
+              static_cast<int>(test.size()), test.data(), static_cast<int>(what.size()),
+              what.data());
+  if (runningInCi())
+    std::fprintf(stderr, "CI: %.*s: this machine lacks %.*s; that path is not checked here\n",
+                 static_cast<int>(test.size()), test.data(), static_cast<int>(what.size()),
+                 what.data());
 }
 
 } // namespace strahler::test_support

@@ -1,3 +1,5 @@
+#include "ci_environment.h"
+
 #include "strahler/simd/instruction_set.h"
 #include "strahler/simd/lane_ops.h"
 
@@ -135,8 +137,10 @@ TEST(X86LaneOps, Sse2MatchesThePortableOperations) {
 }
 
 TEST(X86LaneOps, Avx2MatchesThePortableOperations) {
-  if (!supports(InstructionSet::kAvx2))
+  if (!supports(InstructionSet::kAvx2)) {
+    test_support::noteMissingHardware("X86LaneOps.Avx2MatchesThePortableOperations", "AVX2");
     GTEST_SKIP() << "this CPU has no AVX2";
+  }
   checkAvx2();
 }
 
@@ -178,8 +182,10 @@ TEST(X86LaneOps, Avx2MatchesThePortableOperations) {
 }
 
 TEST(X86LaneOps, Avx512MatchesThePortableOperations) {
-  if (!supports(InstructionSet::kAvx512))
+  if (!supports(InstructionSet::kAvx512)) {
+    test_support::noteMissingHardware("X86LaneOps.Avx512MatchesThePortableOperations", "AVX-512");
     GTEST_SKIP() << "this CPU has no AVX-512";
+  }
   checkAvx512();
 }
 
