@@ -370,9 +370,9 @@ TEST(TileServer, StopsGracefullyUnderLoad) {
       }
     });
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  const auto start = std::chrono::steady_clock::now();
+  // How long stop() takes is bounded in the `timing` suite (http_timing_test: stop() and its
+  // drain); here, that it returns under load and the clients see no failure.
   s->server.stop(std::chrono::milliseconds(3000));
-  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
   running = false;
   for (std::thread& t : clients)
     t.join();

@@ -605,12 +605,10 @@ TEST(ServeCommand, ServesTilesAndStopsCleanlyOnSigterm) {
   std::string rest;
   for (std::string line; !(line = readLine(pipe)).empty() || !std::feof(pipe);)
     rest += line + "\n";
+  // pclose waits for the server (the shell exec'd into it) and reaps it. How soon it exits is
+  // bounded in the `timing` suite (serve_fault_test: SIGTERM under load within the drain window).
   pclose(pipe);
-  // pclose reaped the server (the shell exec'd into it); it must be gone within the bound.
-  while (::kill(pid, 0) == 0 && std::chrono::steady_clock::now() - start < std::chrono::seconds(6))
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  EXPECT_NE(::kill(pid, 0), 0) << "server still running 6 s after SIGTERM";
-  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+  EXPECT_NE(::kill(pid, 0), 0) << "server still running after SIGTERM";
   EXPECT_NE(rest.find("SIGTERM received, draining"), std::string::npos) << rest;
 }
 
