@@ -530,15 +530,23 @@ describe('game client vegetation', () => {
           g.vegetation.inFlight === 0 && g.stats.inFlight === 0;
       }, frame, { timeout: STEP_MS, polling: 200 });
       stats = await vegetation();
-      if (stats.tree > 0) break;
+      if (stats.tree > 0 && stats.bush > 0) break;
     }
     assert.ok(stats.tree > 0 && stats.failed === 0, `no tree drawn: ${JSON.stringify(stats)}`);
+    assert.ok(stats.bush > 0, `no bush drawn: ${JSON.stringify(stats)}`);
     const tiles = record.responses.filter((r) => /\/vegetation\/1[67]\/\d+\/\d+\.json/.test(r.url));
     assert.ok(tiles.length > 0, 'no vegetation tile was requested');
+    // Trees come from zoom-16 tiles, bushes from zoom-17 ones (vegetation.js): both were asked.
+    for (const z of [16, 17]) {
+      assert.ok(tiles.some((t) => t.url.includes(`/vegetation/${z}/`)), `no zoom-${z} vegetation tile`);
+    }
     for (const tile of tiles) assert.match(tile.type, /^application\/json/, tile.url);
+    await assertVersioned(tiles, 'a vegetation tile');
     const drawn = await page.evaluate(() => window.strahlerGame.vegetation.group.children
       .map((mesh) => ({ name: mesh.name, count: mesh.count, instanced: mesh.isInstancedMesh })));
     assert.ok(drawn.some((m) => m.name === 'trees' && m.instanced && m.count === stats.tree), JSON.stringify(drawn));
+    // vegetation.js names each kind's meshes `${kind.name}s`.
+    assert.ok(drawn.some((m) => m.name === 'bushs' && m.instanced && m.count === stats.bush), JSON.stringify(drawn));
     await page.waitForTimeout(500);
     assertNotBlank(await page.locator('#scene').screenshot(), 'the game canvas near the ground');
     writeFileSync(join(SCREENSHOTS, 'game-vegetation.png'), await page.screenshot());
