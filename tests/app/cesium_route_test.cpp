@@ -37,8 +37,11 @@ TEST(CesiumRoute, TmsRowsBecomeRowsFromTheNorth) {
   EXPECT_EQ(r.world, "w");
   EXPECT_EQ(r.options.extensions, 0u);
   EXPECT_FALSE(r.options.gzip);
-  // A row past the level stays outside it (the service answers 404).
-  EXPECT_LT(valueOf(parse("/worlds/w/cesium/3/9/8.terrain")).tile.y, 0);
+  // A row past the level is refused as not found (404), naming the TMS row asked for.
+  const auto past = parse("/worlds/w/cesium/3/9/8.terrain");
+  ASSERT_FALSE(past.ok());
+  EXPECT_EQ(past.error().code, base::ErrorCode::kNotFound);
+  EXPECT_EQ(past.error().message, "tile 3/9/8 is outside the grid: level 3 has TMS rows 0..7");
   EXPECT_LT(valueOf(parse("/worlds/w/cesium/60/0/0.terrain")).tile.y, std::int64_t{1} << 41);
 }
 

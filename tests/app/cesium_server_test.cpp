@@ -211,18 +211,21 @@ TEST(CesiumTerrainServer, TheIslandsCentreTileIsTheGoldenOne) {
 TEST(CesiumTerrainServer, BadTerrainRequestsGetDefiniteAnswers) {
   Running s;
   const Tms t = tileOfCentre(5);
-  EXPECT_EQ(request(s.port(), "/worlds/island/cesium/18/0/0.terrain").status, 404);
-  EXPECT_EQ(request(s.port(), "/worlds/island/cesium/0/2/0.terrain").status, 404);
-  EXPECT_EQ(request(s.port(), "/worlds/island/cesium/1/0/2.terrain").status, 404);
-  EXPECT_EQ(request(s.port(), "/worlds/island/cesium/0/0/x.terrain").status, 400);
-  EXPECT_EQ(request(s.port(), "/worlds/island/cesium/0/0/0.png").status, 400);
-  EXPECT_EQ(request(s.port(), t.path() + "?extensions=bogus").status, 400);
-  EXPECT_EQ(request(s.port(), t.path(), "GET",
-                    "Accept: application/vnd.quantized-mesh;extensions=vertexnormals\r\n")
-                .status,
-            400);
-  EXPECT_EQ(request(s.port(), "/worlds/island/tiles/0/0/0.terrain").status, 400);
-  EXPECT_EQ(request(s.port(), "/worlds/nowhere/cesium/layer.json").status, 404);
+  const auto refused = [&](const std::string& path, int status, const std::string& message,
+                           const std::string& headers = "") {
+    test_support::expectRefused(s.port(), path, status, message, headers);
+  };
+  refused("/worlds/island/cesium/18/0/0.terrain", 404, "outside the grid (zoom 0..17)");
+  refused("/worlds/island/cesium/0/2/0.terrain", 404, "tile 0/2/0 is outside the grid");
+  refused("/worlds/island/cesium/1/0/2.terrain", 404, "tile 1/0/2 is outside the grid");
+  refused("/worlds/island/cesium/0/0/x.terrain", 400, "'x' is not a non-negative integer");
+  refused("/worlds/island/cesium/0/0/0.png", 400, "a Cesium terrain tile is named {y}.terrain");
+  refused(t.path() + "?extensions=bogus", 400, "unknown quantized-mesh extension 'bogus'");
+  refused(t.path(), 400, "unknown quantized-mesh extension 'vertexnormals'",
+          "Accept: application/vnd.quantized-mesh;extensions=vertexnormals\r\n");
+  refused(t.path() + "?size=5", 400, "unknown query parameter 'size'");
+  refused("/worlds/island/tiles/0/0/0.terrain", 400, "Cesium terrain tiles are served under");
+  refused("/worlds/nowhere/cesium/layer.json", 404, "unknown world 'nowhere'");
   EXPECT_EQ(request(s.port(), "/health").status, 200);
 }
 

@@ -307,18 +307,22 @@ TEST(LayerTile, IsServedLikeEveryOtherTile) {
   HttpResponse unknown = get(port, "/worlds/island/layers/snow/12/1736/1494.png");
   EXPECT_EQ(unknown.status, 404);
   EXPECT_NE(unknown.body.find("unknown layer 'snow'"), std::string::npos) << unknown.body;
-  EXPECT_EQ(get(port, "/worlds/island/layers/snow/tilejson.json").status, 404);
-  EXPECT_EQ(get(port, "/worlds/island/layers/vegetation/12/1736/1494.png?species=oak").status, 404);
-  HttpResponse azimuth = get(port, path + "?azimuth=90");
-  EXPECT_EQ(azimuth.status, 400);
-  EXPECT_NE(azimuth.body.find("hillshade layer only"), std::string::npos) << azimuth.body;
-  for (const std::string bad : {"/worlds/island/layers/hillshade/12/1736/1494.png?azimuth=400",
-                                "/worlds/island/layers/hillshade/12/1736/1494.png?altitude=-5",
-                                "/worlds/island/layers/slope/12/1736/1494.png?size=8",
-                                "/worlds/island/layers/slope/12/1736/1494.jpg",
-                                "/worlds/island/layers/slope/tiles/12/1736/1494.png",
-                                "/worlds/island/layers/slope/tilejson.json?size=512"})
-    EXPECT_EQ(get(port, bad).status, 400) << bad;
+  const auto refused = [&](const std::string& target, int status, const std::string& message) {
+    test_support::expectRefused(port, target, status, message);
+  };
+  refused("/worlds/island/layers/snow/tilejson.json", 404, "unknown layer 'snow'");
+  refused("/worlds/island/layers/vegetation/12/1736/1494.png?species=oak", 404,
+          "unknown species 'oak'");
+  refused(path + "?azimuth=90", 400, "hillshade layer only");
+  refused("/worlds/island/layers/hillshade/12/1736/1494.png?azimuth=400", 400,
+          "azimuth must be in [0, 360) degrees");
+  refused("/worlds/island/layers/hillshade/12/1736/1494.png?altitude=-5", 400,
+          "altitude must be a plain decimal number");
+  refused("/worlds/island/layers/slope/12/1736/1494.png?size=8", 400, "size must be in [16, 1024]");
+  refused("/worlds/island/layers/slope/12/1736/1494.jpg", 400, "a layer tile is named {y}.png");
+  refused("/worlds/island/layers/slope/tiles/12/1736/1494.png", 400,
+          "layer tiles are layers/{name}/{z}/{x}/{y}.png");
+  refused("/worlds/island/layers/slope/tilejson.json?size=512", 400, "not size");
   HttpResponse deep = get(port, "/worlds/island/layers/slope/19/0/0.png");
   EXPECT_EQ(deep.status, 404);
   EXPECT_NE(deep.body.find("zoom 0..18"), std::string::npos) << deep.body;

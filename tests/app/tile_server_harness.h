@@ -80,6 +80,18 @@ struct Running {
   std::uint16_t port() const { return server.port(); }
 };
 
+/// Expects `target` to be refused with `status` and a JSON error whose message holds `message`
+/// (the client learns what was wrong, not only that something was).
+inline void expectRefused(std::uint16_t port, const std::string& target, int status,
+                          const std::string& message, const std::string& extraHeaders = "") {
+  const HttpResponse r = request(port, target, "GET", extraHeaders);
+  EXPECT_EQ(r.status, status) << target << " " << r.body;
+  EXPECT_EQ(r.headers.count("content-type") ? r.headers.at("content-type") : "", "application/json")
+      << target;
+  EXPECT_NE(r.body.find("\"error\": \""), std::string::npos) << target << " " << r.body;
+  EXPECT_NE(r.body.find(message), std::string::npos) << target << " " << r.body;
+}
+
 /// The content version the server gives world `world` (its GET /worlds/{world} document's
 /// "version"), as a page that builds tile URLs reads it.
 inline std::string servedVersion(std::uint16_t port, const std::string& world = "island") {

@@ -144,16 +144,19 @@ TEST(VectorTileServer, TileJsonListsTheVectorLayers) {
 
 TEST(VectorTileServer, BadVectorRequestsGetDefiniteAnswers) {
   Running s;
-  EXPECT_EQ(request(s.port(), "/worlds/island/vector/19/0/0.mvt").status, 404);
-  EXPECT_EQ(request(s.port(), "/worlds/island/vector/2/4/0.mvt").status, 404);
-  EXPECT_EQ(request(s.port(), "/worlds/island/vector/0/0/x.mvt").status, 400);
-  EXPECT_EQ(request(s.port(), "/worlds/island/vector/0/0/00.mvt").status, 400);
-  EXPECT_EQ(request(s.port(), "/worlds/island/vector/0/0/0.png").status, 400);
-  EXPECT_EQ(request(s.port(), "/worlds/island/vector/0/0/0.mvt?size=512").status, 400);
-  EXPECT_EQ(request(s.port(), "/worlds/island/tiles/0/0/0.mvt").status, 400);
-  EXPECT_EQ(request(s.port(), "/worlds/island/local/0/0/0.mvt").status, 400);
-  EXPECT_EQ(request(s.port(), "/worlds/island/vector/0/0.mvt").status, 404);
-  EXPECT_EQ(request(s.port(), "/worlds/nowhere/vector/0/0/0.mvt").status, 404);
+  const auto refused = [&](const std::string& path, int status, const std::string& message) {
+    test_support::expectRefused(s.port(), path, status, message);
+  };
+  refused("/worlds/island/vector/19/0/0.mvt", 404, "tile 19/0/0 is outside the grid");
+  refused("/worlds/island/vector/2/4/0.mvt", 404, "tile 2/4/0 is outside the grid");
+  refused("/worlds/island/vector/0/0/x.mvt", 400, "'x' is not a non-negative integer");
+  refused("/worlds/island/vector/0/0/00.mvt", 400, "'00' has a leading zero");
+  refused("/worlds/island/vector/0/0/0.png", 400, "a vector tile is named {y}.mvt");
+  refused("/worlds/island/vector/0/0/0.mvt?size=512", 400, "unknown query parameter 'size'");
+  refused("/worlds/island/tiles/0/0/0.mvt", 400, "vector tiles are served under");
+  refused("/worlds/island/local/0/0/0.mvt", 400, "vector tiles are served under");
+  refused("/worlds/island/vector/0/0.mvt", 404, "no such resource under /worlds/island");
+  refused("/worlds/nowhere/vector/0/0/0.mvt", 404, "unknown world 'nowhere'");
 }
 
 TEST(VectorTileServer, LayersCarryTheirAttributesAndStayInTheBuffer) {

@@ -231,17 +231,18 @@ TEST(VegetationServer, FourChildrenHoldExactlyTheirParentsTrees) {
 
 TEST(VegetationServer, BadRequestsGetDefiniteAnswers) {
   Running s;
-  const HttpResponse shallow = request(s.port(), "/worlds/island/vegetation/15/13892/11956.json");
-  EXPECT_EQ(shallow.status, 404);
-  EXPECT_NE(shallow.body.find("zooms 16 to 18"), std::string::npos) << shallow.body;
-  EXPECT_EQ(request(s.port(), "/worlds/island/vegetation/19/0/0.json").status, 404);
-  EXPECT_EQ(request(s.port(), "/worlds/island/vegetation/16/65536/0.json").status, 404);
-  EXPECT_EQ(request(s.port(), "/worlds/island/vegetation/16/0/x.json").status, 400);
-  EXPECT_EQ(request(s.port(), "/worlds/island/vegetation/16/0/00.json").status, 400);
-  EXPECT_EQ(request(s.port(), "/worlds/island/vegetation/16/0/0.png").status, 400);
-  EXPECT_EQ(request(s.port(), "/worlds/island/vegetation/16/0/0.json?size=512").status, 400);
-  EXPECT_EQ(request(s.port(), "/worlds/island/tiles/16/0/0.json").status, 400);
-  EXPECT_EQ(request(s.port(), "/worlds/nowhere/vegetation/16/0/0.json").status, 404);
+  const auto refused = [&](const std::string& path, int status, const std::string& message) {
+    test_support::expectRefused(s.port(), path, status, message);
+  };
+  refused("/worlds/island/vegetation/15/13892/11956.json", 404, "zooms 16 to 18");
+  refused("/worlds/island/vegetation/19/0/0.json", 404, "tile 19/0/0 is outside the grid");
+  refused("/worlds/island/vegetation/16/65536/0.json", 404, "tile 16/65536/0 is outside the grid");
+  refused("/worlds/island/vegetation/16/0/x.json", 400, "'x' is not a non-negative integer");
+  refused("/worlds/island/vegetation/16/0/00.json", 400, "'00' has a leading zero");
+  refused("/worlds/island/vegetation/16/0/0.png", 400, "a vegetation tile is named {y}.json");
+  refused("/worlds/island/vegetation/16/0/0.json?size=512", 400, "unknown query parameter 'size'");
+  refused("/worlds/island/tiles/16/0/0.json", 400, "vegetation tiles are served under");
+  refused("/worlds/nowhere/vegetation/16/0/0.json", 404, "unknown world 'nowhere'");
 }
 
 } // namespace

@@ -287,6 +287,47 @@ INSTANTIATE_TEST_SUITE_P(
       return "case" + std::to_string(param.index);
     });
 
+TEST(GenerateCommand, BadFeaturesWithAnOutputFileWriteNothing) {
+  // A bad --features file is refused before any generation: with -o, no world file (nor a
+  // temporary one) appears in the output folder, and the cache gets nothing either.
+  const fs::path out = scratchDir() / "features-refused";
+  fs::remove_all(out);
+  fs::create_directories(out);
+  const struct {
+    std::string features;
+    std::string message;
+  } cases[] = {
+      {writeScratch("sea-o.geojson", kSeaMountain).string(), "lies off the land"},
+      {"/nonexistent/f.geojson", "features file '/nonexistent/f.geojson': file not found"},
+      {writeScratch("half.geojson", R"({"type":"FeatureCollection","features":[)").string(),
+       "not valid JSON"},
+      {writeScratch("kindless.geojson", R"({"type":"Feature","properties":{},
+         "geometry":{"type":"Point","coordinates":[0,0]}})")
+           .string(),
+       "kind"},
+  };
+  for (const auto& c : cases) {
+    const fs::path world = out / "drawn.world";
+    const ProcessRun run =
+        strahler("generate --quiet --features " + c.features + " -o " + world.string());
+    EXPECT_EQ(run.exitCode, 1) << c.features << ": " << run.err;
+    EXPECT_NE(run.err.find(c.message), std::string::npos) << c.features << ": " << run.err;
+    EXPECT_TRUE(fs::is_empty(out)) << c.features << ": something was written";
+  }
+}
+
+TEST(ServeCommand, BadFeaturesAreRefusedBeforeListening) {
+  // `timeout` bounds a server that would start anyway (exit 124 then, and a banner on stdout).
+  const ProcessRun run = strahler::test_support::runProgram(
+      "timeout",
+      "60 " + std::string(STRAHLER_EXECUTABLE) + " serve --quiet --port 0 --features " +
+          writeScratch("sea-serve.geojson", kSeaMountain).string(),
+      scratchDir());
+  EXPECT_EQ(run.exitCode, 1) << run.err;
+  EXPECT_NE(run.err.find("lies off the land"), std::string::npos) << run.err;
+  EXPECT_EQ(run.out.find("serving"), std::string::npos) << run.out;
+}
+
 } // namespace
 
 namespace {

@@ -20,6 +20,7 @@
 #include <csignal>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <spng.h>
 #include <string>
 #include <sys/wait.h>
@@ -231,6 +232,58 @@ TEST(ExportHeightmap, RefusesBadInputWithAPreciseMessageAndWritesNothing) {
     EXPECT_NE(run.err.find(c.message), std::string::npos) << c.args << ": " << run.err;
   }
   EXPECT_TRUE(fs::is_empty(dir));
+  // The command line itself, and the world file: each message names what is wrong (the option
+  // and the value given, or the file and its fault). An option the command does not know is a
+  // usage error (exit 2, as for every command); the rest exit 1.
+  const fs::path bad = outputDir("refused-worlds");
+  const std::string bytes = readWholeFile(world);
+  ASSERT_GT(bytes.size(), 1000u);
+  const fs::path truncated = bad / "truncated.world", corrupt = bad / "corrupt.world",
+                 aFile = bad / "a-file";
+  {
+    std::ofstream(truncated, std::ios::binary) << bytes.substr(0, 1000);
+    std::string flipped = bytes;
+    for (std::size_t i = 200; i < 500; ++i)
+      flipped[i] = static_cast<char>(flipped[i] ^ 0x5a);
+    std::ofstream(corrupt, std::ios::binary) << flipped;
+    std::ofstream(aFile) << "not a folder\n";
+  }
+  const struct {
+    std::string args;
+    int exitCode;
+    std::string message, value;
+  } commandLines[] = {
+      {world + " --engine raw --bbox -16,64,-15,65 --local 0,0,10,10" + out, 1, "--bbox",
+       "--local"},
+      {"--engine raw" + out, 1, "WORLD", ""},
+      {world + out, 1, "--engine", ""},
+      {world + " --engine raw", 1, "-o", ""},
+      {world + " --engine unreal --tiles 2" + out, 1, "--tiles", "2"},
+      {world + " --engine unreal --tiles 2x" + out, 1, "--tiles", "2x"},
+      {world + " --engine unreal --tiles 0x2" + out, 1, "--tiles", "0x2"},
+      {world + " --engine unreal --tiles 65x65" + out, 1, "--tiles", "65x65"},
+      {world + " --engine raw --size abc" + out, 1, "--size", "abc"},
+      {world + " --engine raw --size 1" + out, 1, "--size", "1"},
+      {world + " --engine raw --size 99999" + out, 1, "--size", "99999"},
+      {world + " --engine raw --threads x" + out, 1, "--threads", "x"},
+      {world + " --engine raw --threads 0" + out, 1, "--threads", "0"},
+      {world + " --engine raw --threads 100000" + out, 1, "--threads", "100000"},
+      {world + " --engine raw --frobnicate" + out, 2, "--frobnicate", ""},
+      {(bad / "missing.world").string() + " --engine raw" + out, 1, "missing.world", ""},
+      {truncated.string() + " --engine raw" + out, 1, "truncated.world", "truncated"},
+      {corrupt.string() + " --engine raw" + out, 1, "corrupt.world", "checksum"},
+      {world + " --engine raw -o " + (aFile / "h.r16").string(), 1, "a-file", "folder"},
+  };
+  for (const auto& c : commandLines) {
+    const ProcessRun run = runStrahler("export-heightmap " + c.args);
+    EXPECT_EQ(run.exitCode, c.exitCode) << c.args << ": " << run.err;
+    EXPECT_NE(run.err.find(c.message), std::string::npos) << c.args << ": " << run.err;
+    EXPECT_NE(run.err.find(c.value), std::string::npos) << c.args << ": " << run.err;
+  }
+  EXPECT_TRUE(fs::is_empty(dir));
+  for (const auto& entry : fs::directory_iterator(bad)) // the three files written above only
+    EXPECT_TRUE(entry.path() == truncated || entry.path() == corrupt || entry.path() == aFile)
+        << entry.path();
   // An output folder that does not exist is a failure (exit 1), found before any work.
   const ProcessRun unwritable = runStrahler("export-heightmap " + world + " --engine unity -o " +
                                             (dir / "missing" / "h.raw").string());
