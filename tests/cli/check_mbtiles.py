@@ -15,6 +15,7 @@ Usage: check_mbtiles.py <dir> <strahler> <minzoom> <maxzoom>. Exits 1 on any mis
 """
 import math
 import os
+import re
 import gzip
 import json
 import sqlite3
@@ -39,6 +40,9 @@ def main():
             fail(f"metadata has no '{key}' row: {meta}")
     if meta["format"] != "png" or meta["type"] != "baselayer" or meta["encoding"] != "mapbox":
         fail(f"metadata format/type/encoding: {meta}")
+    # The world's content version, which the server's tile URLs carry as `v`.
+    if not re.fullmatch(r"[0-9a-f]{16}", meta.get("worldVersion", "")):
+        fail(f"metadata worldVersion: {meta.get('worldVersion')}")
     if (int(meta["minzoom"]), int(meta["maxzoom"])) != (min_zoom, max_zoom):
         fail(f"metadata zooms {meta['minzoom']}-{meta['maxzoom']}")
     west, south, east, north = (float(v) for v in meta["bounds"].split(","))

@@ -52,6 +52,8 @@ expect(metadata.format === "png", `metadata format ${metadata.format}`);
 expect(typeof metadata.name === "string" && metadata.name.length > 0, "metadata without a name");
 expect(/^strahler /.test(metadata.generator ?? ""), `metadata generator ${metadata.generator}`);
 expect(/^[0-9a-f]{32}$/.test(metadata.worldId ?? ""), `metadata worldId ${metadata.worldId}`);
+// The world's content version, which the server's tile URLs carry as `v`.
+expect(/^[0-9a-f]{16}$/.test(metadata.worldVersion ?? ""), `metadata worldVersion ${metadata.worldVersion}`);
 
 const range = (z) => webTileRange(header, z);
 
