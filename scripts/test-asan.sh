@@ -4,8 +4,8 @@
 # coastline repair, the world-file decoder and cache (store_test), the HTTP server core
 # (http_server_test: real sockets), the tile cache, worker pool and trimmer (service_test),
 # the PMTiles varint directories and the archive writers (archive_test), gzip's inflate with its
-# bound (gzip_test), and geometry and base
-# under them. These build a third of the sources, which keeps CI within
+# bound (gzip_test), the HTTP fuzz harness's corpus through the router and the tile route
+# parsers (fuzz_corpus_http_request), and geometry and base under them. These build a third of the sources, which keeps CI within
 # its 90 minutes on a 2-core machine; the fuzz harnesses (scripts/fuzz.sh) cover the router
 # and the decoders under the same sanitizers. `--all` builds and runs the whole suite instead,
 # less the tests labelled `timing` (wall-time and resident-memory bounds of the real server,
@@ -29,5 +29,8 @@ if [ "${1:-}" = "--all" ]; then
 fi
 tests=(base_test geometry_test input_test repair_test store_test http_server_test service_test
        archive_test gzip_test)
-cmake --build --preset asan -j "$(nproc)" --target "${tests[@]}"
-ctest --preset asan -j "$(nproc)" --timeout 900 --no-tests=error -R "^($(IFS='|'; echo "${tests[*]}"))\$"
+# The HTTP harness's corpus replayed (the router and every tile route parser: tiles, Cesium
+# terrain with its Accept header and ?extensions=, layers, vector and vegetation tiles).
+cmake --build --preset asan -j "$(nproc)" --target "${tests[@]}" fuzz_http_request
+ctest --preset asan -j "$(nproc)" --timeout 900 --no-tests=error \
+  -R "^($(IFS='|'; echo "${tests[*]}")|fuzz_corpus_http_request)\$"

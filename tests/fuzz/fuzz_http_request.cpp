@@ -1,13 +1,18 @@
 // libFuzzer harness: the bytes a client sends on one connection, handled as
 // server/http/src/session.cpp handles them: Beast's header parser with the server's limits, the
 // protocol rules (checkRequest / checkParseError), the response as written (toWireResponse,
-// appendHead), and for forwarded requests the router's parsers (parseTarget, parseTileRoute,
-// parseVectorTileRoute, parseVegetationRoute)
-// with JSON error answers quoting the client's bytes. Pipelined requests are followed while the
+// appendHead), and for forwarded requests the router (parseTarget, routeOf) and the tile route
+// parsers as TileServer dispatches them (the world version `v` taken out first):
+// parseTileRoute, parseCesiumTerrainRoute (with the Accept and Accept-Encoding headers and
+// ?extensions=), parseLayerRoute, parseVectorTileRoute, parseVegetationRoute; with JSON error
+// answers quoting the client's bytes. Pipelined requests are followed while the
 // connection would stay open. (The tile server itself needs a world and the terrain code:
 // tests/app covers its dispatch.)
+#include "cesium_route.h"
+#include "layer_route.h"
 #include "request_rules.h"
 #include "route_parser.h"
+#include "router.h"
 #include "tile_route.h"
 #include "vector_route.h"
 #include "vegetation_route.h"
@@ -18,9 +23,11 @@
 #include <cstdint>
 #include <cstdlib>
 #include <limits>
+#include <map>
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace {
 
@@ -39,22 +46,47 @@ void writeResponse(strahler::http::Response response, unsigned version, bool hea
     std::abort();
 }
 
+/// The tile `target` names, read by its endpoint's parser as TileServer::handleWorld does.
+strahler::base::Result<strahler::app::TileRequest>
+parseTile(strahler::app::Endpoint endpoint, const std::string& world,
+          const strahler::app::ParsedTarget& target, const strahler::http::Request& request) {
+  using strahler::app::Endpoint;
+  std::map<std::string, std::string> query = target.query;
+  query.erase("v"); // the world's version: not the tile's
+  const auto& s = target.segments;
+  switch (endpoint) {
+  case Endpoint::kLayerTile:
+    return strahler::app::parseLayerRoute(world, s, query);
+  case Endpoint::kCesiumTerrain:
+    return strahler::app::parseCesiumTerrainRoute(world, s, query, request.header("accept"),
+                                                  request.header("accept-encoding"));
+  case Endpoint::kVectorTile:
+    return strahler::app::parseVectorTileRoute(world, s, query, request.header("accept-encoding"));
+  case Endpoint::kVegetationTile:
+    return strahler::app::parseVegetationRoute(world, s, query, request.header("accept-encoding"));
+  default:
+    return strahler::app::parseTileRoute(world, s, query);
+  }
+}
+
 /// The router's parsing of a forwarded request, answered as a server without worlds would
 /// (tile routes parsed in full first); true when the answer closes the connection.
 bool route(const strahler::http::Request& request, unsigned version, bool keepAlive) {
+  using strahler::app::Endpoint;
   strahler::http::Response response;
   const auto parsed = strahler::app::parseTarget(request.target);
+  const auto route =
+      parsed ? strahler::app::routeOf(parsed.value().segments) : strahler::app::Route{};
+  const bool tileEndpoint =
+      route.endpoint == Endpoint::kTile || route.endpoint == Endpoint::kLayerTile ||
+      route.endpoint == Endpoint::kCesiumTerrain || route.endpoint == Endpoint::kVectorTile ||
+      route.endpoint == Endpoint::kVegetationTile;
+  const auto& s = parsed ? parsed.value().segments : std::vector<std::string>{};
   if (!parsed) {
     response = strahler::http::errorResponse(400, parsed.error().message);
     response.close = true;
-  } else if (const auto& s = parsed.value().segments; s.size() == 6 && s[0] == "worlds") {
-    const auto& query = parsed.value().query;
-    const auto tile =
-        s[2] == "vector"
-            ? strahler::app::parseVectorTileRoute(s[1], s, query, request.header("accept-encoding"))
-        : s[2] == "vegetation"
-            ? strahler::app::parseVegetationRoute(s[1], s, query, request.header("accept-encoding"))
-            : strahler::app::parseTileRoute(s[1], s, query);
+  } else if (tileEndpoint) {
+    const auto tile = parseTile(route.endpoint, route.world, parsed.value(), request);
     if (!tile) {
       response = strahler::http::errorResponse(400, tile.error().message);
       response.close = true;
