@@ -1,7 +1,7 @@
 // `strahler export-heightmap` run as a user runs it: each engine's size, byte order and
 // orientation read back independently of the writer and checked against World::height,
 // Unreal's tiles sharing their edges, the same bytes for any thread count, and bad input
-// refused with exit 2 and nothing written.
+// refused with exit 1 and nothing written.
 #include "engine_heightmap.h"
 #include "heightmap_export_support.h"
 #include "program_run.h"
