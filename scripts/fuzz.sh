@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer harnesses (the fuzz preset: clang, ASan + UBSan) and runs each for SECONDS
-# (default 60): scripts/fuzz.sh [SECONDS] [HARNESS ...]
+# (default 60): scripts/fuzz.sh [SECONDS] [HARNESS ...]; or shares one budget of SECONDS
+# between them (CI: .ci/run): scripts/fuzz.sh --total SECONDS [HARNESS ...]
 # Harnesses: http_request coastline params mouths features world_file (default: all, one after another).
 # Each starts from the committed seeds (tests/fuzz/corpus/, tests/fuzz/regressions/, test data)
 # plus what earlier runs here found (build/fuzz/corpus/<harness>/, kept between runs). A crash,
@@ -8,11 +9,23 @@
 # the script exit 1 after the remaining harnesses ran. docs/testing.md: running longer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds="${1:-60}"
-shift || true
+total=""
+if [ "${1:-}" = "--total" ]; then
+  total="${2:?--total needs SECONDS}"
+  shift 2
+  seconds=""
+else
+  seconds="${1:-60}"
+  shift || true
+fi
 harnesses=("$@")
 if [ ${#harnesses[@]} -eq 0 ]; then
   harnesses=(http_request coastline params mouths features world_file)
+fi
+if [ -n "$total" ]; then
+  seconds=$((total / ${#harnesses[@]}))
+  [ "$seconds" -ge 1 ] || seconds=1
+  echo "fuzz: ${total} s shared by ${#harnesses[@]} harnesses: ${seconds} s each"
 fi
 
 cmake --preset fuzz >/dev/null
