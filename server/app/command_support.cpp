@@ -21,9 +21,11 @@ int printUsage(const char* usage) {
   return 0;
 }
 
-void printRepairs(const input::WorldSpec& spec) {
+void printRepairsAndWarnings(const input::WorldSpec& spec) {
   for (const repair::Change& change : spec.repairs)
     std::fprintf(stderr, "strahler: repaired: %s\n", repair::describe(change).c_str());
+  for (const std::string& warning : spec.warnings)
+    std::fprintf(stderr, "strahler: warning: %s\n", warning.c_str());
 }
 
 bool endsWith(const std::string& s, const std::string& suffix) {

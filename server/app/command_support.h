@@ -14,9 +14,10 @@ int usageError(const base::Error& error, const char* usage);
 /// Prints the usage text to stdout; returns 0.
 int printUsage(const char* usage);
 /// Prints each change --repair made to the coastline of `spec` to stderr, one line each
-/// ("strahler: repaired: self-intersection at (lon, lat), area km²: ..."), even with --quiet:
-/// like a warning, the user must see what was changed.
-void printRepairs(const input::WorldSpec& spec);
+/// ("strahler: repaired: self-intersection at (lon, lat), area km²: ..."), then each of its
+/// warnings ("strahler: warning: ..."), even with --quiet: the user must see what was changed
+/// and what looks wrong.
+void printRepairsAndWarnings(const input::WorldSpec& spec);
 /// True when s ends with suffix.
 bool endsWith(const std::string& s, const std::string& suffix);
 /// Writes a text file atomically (temporary file, then rename).

@@ -131,7 +131,7 @@ int runGenerate(const std::vector<std::string>& rawArgs) {
     return fail(spec.error());
   if (grower)
     spec.value().params.grower = *grower;
-  printRepairs(spec.value());
+  printRepairsAndWarnings(spec.value());
   base::StageTimer timer;
   TerminalProgress progress(args.has("--quiet"));
   auto world =

@@ -94,7 +94,7 @@ loadWorlds(const CliArgs& args) {
   sources.repair = args.has("--repair");
   STRAHLER_ASSIGN_OR_RETURN(const input::InputLimits limits, worldLimits(args));
   STRAHLER_ASSIGN_OR_RETURN(input::WorldSpec spec, input::loadWorldSpec(sources, limits));
-  printRepairs(spec);
+  printRepairsAndWarnings(spec);
   TerminalProgress progress(args.has("--quiet"));
   STRAHLER_ASSIGN_OR_RETURN(LoadedWorld loaded,
                             loadOrGenerateWorld(spec,
