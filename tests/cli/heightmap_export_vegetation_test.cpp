@@ -197,7 +197,7 @@ TEST(ExportHeightmapVegetation, RefusesBadInput) {
   const std::string world = "export-heightmap " + islandWorld().string();
   const ProcessRun format =
       runStrahler(world + " --engine raw --vegetation xml -o " + (dir / "h.r16").string());
-  EXPECT_EQ(format.exitCode, 1);
+  EXPECT_EQ(format.exitCode, 2); // a wrong command line
   EXPECT_NE(format.err.find("--vegetation xml: use csv or json"), std::string::npos) << format.err;
   EXPECT_TRUE(fs::is_empty(dir));
 }
