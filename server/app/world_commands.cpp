@@ -81,9 +81,9 @@ constexpr const char* kTileUsage =
     "format terrain only: quantized-mesh-1.0 with normals, water mask and metadata.\n"
     "png is Terrain-RGB; relief an RGB picture (height tint x hillshade);\n"
     "mvt a Mapbox Vector Tile (web only: water, contours, rivers, features);\n"
-    "json the trees and bushes of a tile (web only, zooms 16..18; see the README).\n"
+    "json the trees and bushes of a tile (web only, zooms 16..18; docs/http.md).\n"
     "--layer: a derived layer as a grey PNG (slope, aspect, illumination, hillshade,\n"
-    "humidity, sediment, vegetation, water; see the README), instead of --format;\n"
+    "humidity, sediment, vegetation, water; docs/http.md), instead of --format;\n"
     "--species for vegetation, --azimuth/--altitude for hillshade.\n"
     "N: pixels per side for rasters (16..1024, default 256),\n"
     "quads per side for meshes (4..256, default 64).\n";
