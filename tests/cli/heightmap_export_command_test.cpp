@@ -291,6 +291,53 @@ TEST(EngineHeightmap, ValidSizesFollowEachEnginesRule) {
   EXPECT_FALSE(strahler::app::checkSize(Engine::kRaw, 1));
 }
 
+TEST(ExportHeightmap, SidecarsGiveSeaLevelsSixteenBitValueAndTheNorthRowOfEachFile) {
+  const fs::path dir = outputDir("sea-level");
+  const ProcessRun unity =
+      runStrahler("export-heightmap " + islandWorld().string() +
+                  " --engine unity --size 129 --splat -o " + (dir / "h.raw").string());
+  ASSERT_EQ(unity.exitCode, 0) << unity.err;
+  const nlohmann::json side = readSidecar(dir / "h.json");
+  ASSERT_TRUE(side["seaLevel"]["value16"].is_number()) << side.dump(2);
+  const int sea = side["seaLevel"]["value16"];
+  const double lo = side["minHeight"], hi = side["maxHeight"];
+  ASSERT_LT(lo, 0.0); // the default land's box reaches into the sea
+  // The samples below the value are under the sea and those above it on land: the file, read
+  // with the sidecar's own encoding, agrees with the value it gives for 0 m.
+  int wet = 0, dry = 0;
+  for (const std::uint16_t v : readR16(dir / "h.raw")) {
+    const double height = lo + v / 65535.0 * (hi - lo);
+    if (v < sea) {
+      EXPECT_LE(height, (hi - lo) / 65535.0);
+      ++wet;
+    } else if (v > sea) {
+      EXPECT_GE(height, -(hi - lo) / 65535.0);
+      ++dry;
+    }
+  }
+  EXPECT_GT(wet, 100);
+  EXPECT_GT(dry, 100);
+  EXPECT_NE(side["northRow"]["heightmap"].get<std::string>().find("the last row; row 0 is the "
+                                                                  "south edge"),
+            std::string::npos);
+  EXPECT_NE(side["northRow"]["splatMaps"].get<std::string>().find("row 0, the first row: unlike "
+                                                                  "this heightmap"),
+            std::string::npos);
+  // Unreal: row 0 is north in every file; float files hold metres, so sea level is 0.
+  const ProcessRun unreal =
+      runStrahler("export-heightmap " + islandWorld().string() + " --engine unreal --size 505 -o " +
+                  (dir / "u.png").string());
+  ASSERT_EQ(unreal.exitCode, 0) << unreal.err;
+  const nlohmann::json unrealSide = readSidecar(dir / "u.json");
+  EXPECT_EQ(unrealSide["northRow"]["heightmap"], "row 0, the first row");
+  EXPECT_TRUE(unrealSide["seaLevel"]["value16"].is_number());
+  const ProcessRun exr =
+      runStrahler("export-heightmap " + islandWorld().string() +
+                  " --engine raw --format exr --size 65 -o " + (dir / "r.exr").string());
+  ASSERT_EQ(exr.exitCode, 0) << exr.err;
+  EXPECT_EQ(readSidecar(dir / "r.json")["seaLevel"]["value"], 0.0);
+}
+
 TEST(EngineHeightmap, QuantizeMapsTheRangeOntoSixteenBits) {
   EXPECT_EQ(strahler::app::quantize(-10, -10, 90), 0);
   EXPECT_EQ(strahler::app::quantize(90, -10, 90), 65535);
