@@ -1,6 +1,8 @@
 #include "cli_args.h"
 
+#include <algorithm>
 #include <charconv>
+#include <string_view>
 
 namespace strahler::app {
 
@@ -34,8 +36,12 @@ base::Result<CliArgs> CliArgs::parse(const std::string& command,
         return makeError(ErrorCode::kInvalidInput, "option '" + name + "' needs a value");
       out.values_[name] = inlineValue ? *inlineValue : args[++i];
     } else {
-      return makeError(ErrorCode::kInvalidInput, "unknown option '" + name + "' for '" + command +
-                                                     "' (see 'strahler " + command + " --help')");
+      std::vector<std::string> known(valued.begin(), valued.end());
+      known.insert(known.end(), flags.begin(), flags.end());
+      const std::string guess = closestName(name, known);
+      return makeError(ErrorCode::kInvalidInput,
+                       "unknown option '" + name + "' for '" + command + "'" +
+                           (guess.empty() ? "" : "; did you mean '" + guess + "'?"));
     }
   }
   return out;
@@ -73,6 +79,63 @@ base::Result<std::optional<std::uint64_t>> CliArgs::getU64(const std::string& na
                                                    "' must be an integer in [0, 2^64 - 1], got '" +
                                                    *text + "'");
   return std::optional<std::uint64_t>(v);
+}
+
+namespace {
+
+/// Edit distance with adjacent transpositions (optimal string alignment): "sevre" is one edit
+/// from "serve". Names are short: O(|a| |b|) is fine.
+std::size_t editDistance(std::string_view a, std::string_view b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i)
+    d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j)
+    d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min(
+          {d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
+std::string_view withoutDashes(std::string_view name) {
+  return name.substr(std::min(name.find_first_not_of('-'), name.size()));
+}
+
+} // namespace
+
+std::string closestName(const std::string& word, const std::vector<std::string>& names) {
+  const std::string_view letters = withoutDashes(word);
+  if (letters.empty() || word.size() > 64)
+    return "";
+  // Two edits for names of up to 8 letters ("sever" → "serve"), a quarter of longer ones; never
+  // as many as the word has letters.
+  const std::size_t allowed =
+      std::min(letters.size() - 1, std::max<std::size_t>(2, letters.size() / 4));
+  std::string best;
+  std::size_t bestDistance = allowed + 1;
+  for (const std::string& name : names) {
+    const std::size_t d = editDistance(word, name);
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = name;
+    }
+  }
+  if (!best.empty())
+    return best;
+  std::size_t bestCommon = 2;
+  for (const std::string& name : names) {
+    const std::string_view other = withoutDashes(name);
+    const std::size_t common = std::min(letters.size(), other.size());
+    if (common > bestCommon && letters.substr(0, common) == other.substr(0, common)) {
+      bestCommon = common;
+      best = name;
+    }
+  }
+  return best;
 }
 
 std::vector<std::string> splitCommas(const std::string& text) {

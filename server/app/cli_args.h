@@ -43,4 +43,11 @@ private:
 /// The parts of a comma-separated option value, empty parts kept ("a,,b" → a, "", b).
 std::vector<std::string> splitCommas(const std::string& text);
 
+/// The name among `names` that `word` most likely misspells, for "did you mean": the nearest
+/// by edit distance (adjacent transpositions count one) when it is at most 2, or a quarter of
+/// the word's letters for longer words, and less than the letters (dashes not counted); else
+/// one that `word` starts with or that starts with `word` (at least 3 letters in common:
+/// "--coastline" → "--coast"). Empty when none is close.
+std::string closestName(const std::string& word, const std::vector<std::string>& names);
+
 } // namespace strahler::app

@@ -139,6 +139,44 @@ std::uint16_t quantize(double height, double minHeight, double maxHeight) noexce
   return static_cast<std::uint16_t>(std::lround(t * 65535.0));
 }
 
+namespace {
+
+/// Where 0 m lies in the file's values: the 16-bit value that quantize() gives it, or the
+/// metres themselves in float files; out of the 16-bit range when the box has no sea or no land.
+nlohmann::ordered_json seaLevelJson(EngineFormat format, const HeightmapExtent& e) {
+  nlohmann::ordered_json j;
+  j["metres"] = 0.0;
+  if (isFloat(format)) {
+    j["value"] = 0.0;
+    j["note"] = "float32 metres: sea level is the value 0";
+    return j;
+  }
+  if (e.minHeight > 0.0 || e.maxHeight < 0.0) {
+    j["value16"] = nullptr;
+    j["note"] = e.minHeight > 0.0 ? "below every height of this box (no sea in it)"
+                                  : "above every height of this box (no land in it)";
+    return j;
+  }
+  j["value16"] = quantize(0.0, e.minHeight, e.maxHeight);
+  j["note"] = "the 16-bit value of 0 m: values below it are under the sea, above it land";
+  return j;
+}
+
+/// For each file the export writes, in plain words, which of its rows is the north edge.
+nlohmann::ordered_json northRowJson(Engine engine, const HeightmapExtent& e) {
+  nlohmann::ordered_json j;
+  j["heightmap"] = southRowFirst(engine)
+                       ? "the last row; row 0 is the south edge (Unity: leave Flip Vertically off)"
+                       : "row 0, the first row";
+  if (e.splat)
+    j["splatMaps"] = southRowFirst(engine)
+                         ? "row 0, the first row: unlike this heightmap, whose row 0 is south"
+                         : "row 0, the first row, as in the heightmap";
+  return j;
+}
+
+} // namespace
+
 std::string sidecarJson(Engine engine, EngineFormat format, const HeightmapExtent& e) {
   const double spanX = e.x1 - e.x0;
   const double spanY = e.y1 - e.y0;
@@ -162,6 +200,8 @@ std::string sidecarJson(Engine engine, EngineFormat format, const HeightmapExten
   j["maxHeight"] = e.maxHeight;
   j["encoding"] = isFloat(format) ? "height = value (float32 metres)"
                                   : "height = minHeight + value / 65535 * (maxHeight - minHeight)";
+  j["seaLevel"] = seaLevelJson(format, e);
+  j["northRow"] = northRowJson(engine, e);
   if (e.tilesX > 1 || e.tilesY > 1)
     j["tiles"] = {{"x", e.tilesX},
                   {"y", e.tilesY},

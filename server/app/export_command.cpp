@@ -48,10 +48,10 @@ constexpr const char* kExportUsage =
     "(and --bbox, degrees) to a PMTiles v3 or MBTiles 1.3 archive, byte for byte the tiles\n"
     "`strahler serve` sends. --format defaults to the extension of FILE. png is Terrain-RGB\n"
     "(the default), relief a colour-relief picture, mvt the vector tiles (gzipped; no --size);\n"
-    "N: pixels per side, 16..1024, default 256. --threads: default all cores; the archive is the "
-    "same for any count. Identical\n"
-    "tiles (the open sea) are stored once. --layer: a derived layer's grey PNG tiles instead\n"
-    "(slope, aspect, illumination, hillshade, humidity, sediment, vegetation, water), as\n"
+    "N: pixels per side, 16..1024, default 256. --threads: default all cores; the archive is\n"
+    "the same for any count. Identical tiles (the open sea) are stored once.\n"
+    "--layer: a derived layer's grey PNG tiles instead (slope, aspect, illumination, hillshade,\n"
+    "humidity, sediment, vegetation, water), as\n"
     "`strahler tile --layer` and the layers/ URLs give them; --species for vegetation,\n"
     "--azimuth/--altitude for hillshade.\n"
     "More than --max-tiles tiles (default 5000000) are refused. The archive is written to\n"
@@ -304,10 +304,9 @@ int exportWorld(const ExportOptions& o, construction::WorldData world) {
   const LonLatBox bounds = worldBounds(world);
   const std::optional<LonLatBox> box = o.bbox ? intersect(*o.bbox, bounds) : bounds;
   if (!box)
-    return usageError({ErrorCode::kInvalidInput, "--bbox " + describe(*o.bbox) +
-                                                     " does not overlap the world (bounds " +
-                                                     describe(bounds) + ")"},
-                      kExportUsage);
+    return fail({ErrorCode::kInvalidInput, "--bbox " + describe(*o.bbox) +
+                                               " does not overlap the world (bounds " +
+                                               describe(bounds) + ")"});
   const std::vector<TileRect> rects = tileRects(*box, o.zooms.first, o.zooms.second);
   if (const std::uint64_t count = countTiles(rects); count > o.maxTiles)
     return fail(makeError(
@@ -353,16 +352,16 @@ int runExport(const std::vector<std::string>& raw) {
                       "--max-tiles", "-o", "--layer", "--species", "--azimuth", "--altitude"},
                      {"--help", "-h", "--quiet"});
   if (!parsed)
-    return usageError(parsed.error(), kExportUsage);
+    return usageError(parsed.error(), "export");
   const CliArgs& args = parsed.value();
   if (args.has("--help") || args.has("-h"))
     return printUsage(kExportUsage);
   auto options = parseOptions(args);
   if (!options)
-    return usageError(options.error(), kExportUsage);
+    return usageError(options.error(), "export");
   if (auto writable = checkWritable(options.value().output); !writable)
     return fail(writable.error());
-  auto world = store::readWorldFile(args.positional()[0]);
+  auto world = readWorldArgument(args.positional()[0], generateFirstHint(args.positional()[0]));
   if (!world)
     return fail(world.error());
   return exportWorld(options.value(), std::move(world).value());

@@ -23,6 +23,13 @@ namespace {
 
 constexpr int kDefaultImageSize = 1600;
 
+/// The error for an output file name generate cannot write.
+std::string outputNameError(const std::string& path) {
+  return "output '" + path +
+         "': use a .world (world file), .geojson (river network) or .png (network image) file "
+         "name";
+}
+
 /// The picture of the network over its blocks; blocks are rebuilt from the graph (a few ms).
 base::Status writeNetworkImage(const std::string& path, const input::WorldSpec& spec,
                                const construction::WorldData& world, int size) {
@@ -45,10 +52,7 @@ base::Status writeOutputs(const CliArgs& args, const input::WorldSpec& spec,
     } else if (endsWith(*o, ".geojson") || endsWith(*o, ".json")) {
       STRAHLER_RETURN_IF_ERROR(writeTextFile(*o, render::riversGeoJson(world, spec.projection)));
     } else {
-      return base::makeError(base::ErrorCode::kInvalidInput,
-                             "output '" + *o +
-                                 "': use a .world (world file), .geojson (river "
-                                 "network) or .png (network image) file name");
+      return base::makeError(base::ErrorCode::kInvalidInput, outputNameError(*o));
     }
   }
   if (auto image = args.get("--image"))
@@ -82,7 +86,7 @@ const char* generateUsage() noexcept {
          "land or crossing another, a mountain in the sea, ...) are refused with exit code 1.\n"
          "--grower grammar|dla: how the river network grows: the paper's open grammar (default)\n"
          "or diffusion-limited aggregation (seed 001; docs/growers.md); params.json may set it\n"
-         "as \"grower\". An unknown grower is refused with exit code 1.\n";
+         "as \"grower\".\n";
 }
 
 int runGenerate(const std::vector<std::string>& rawArgs) {
@@ -92,28 +96,35 @@ int runGenerate(const std::vector<std::string>& rawArgs) {
                                 kMaxAreaOption, kMaxExtentOption},
                                {"--json", "--quiet", "--repair", "--help", "-h"});
   if (!parsed)
-    return usageError(parsed.error(), generateUsage());
+    return usageError(parsed.error(), "generate");
   const CliArgs& args = parsed.value();
   if (args.has("--help") || args.has("-h"))
     return printUsage(generateUsage());
-  if (!args.positional().empty())
-    return usageError(
-        {base::ErrorCode::kInvalidInput, "unexpected argument '" + args.positional()[0] + "'"},
-        generateUsage());
+  if (!args.positional().empty()) {
+    const std::string& extra = args.positional()[0];
+    const bool geojson = endsWith(extra, ".geojson") || endsWith(extra, ".json");
+    return usageError({base::ErrorCode::kInvalidInput,
+                       "unexpected argument '" + extra + "'" +
+                           (geojson ? "; a coastline is given with --coast " + extra : "")},
+                      "generate");
+  }
   auto seed = args.getU64("--seed");
   if (!seed)
-    return usageError(seed.error(), generateUsage());
+    return usageError(seed.error(), "generate");
   auto imageSize = args.getInt("--image-size", 64, 8192);
   if (!imageSize)
-    return usageError(imageSize.error(), generateUsage());
+    return usageError(imageSize.error(), "generate");
 
   std::optional<input::NetworkGrower> grower;
   if (auto name = args.get("--grower")) {
     auto named = input::parseGrower(*name);
     if (!named)
-      return fail(named.error());
+      return usageError(named.error(), "generate");
     grower = named.value();
   }
+  if (auto o = args.get("-o"); o && !endsWith(*o, ".world") && !endsWith(*o, ".png") &&
+                               !endsWith(*o, ".geojson") && !endsWith(*o, ".json"))
+    return usageError({base::ErrorCode::kInvalidInput, outputNameError(*o)}, "generate");
 
   input::WorldSources sources;
   sources.coastPath = args.get("--coast").value_or("");
@@ -125,13 +136,13 @@ int runGenerate(const std::vector<std::string>& rawArgs) {
 
   auto limits = worldLimits(args);
   if (!limits)
-    return usageError(limits.error(), generateUsage());
+    return usageError(limits.error(), "generate");
   auto spec = input::loadWorldSpec(sources, limits.value());
   if (!spec)
     return fail(spec.error());
   if (grower)
     spec.value().params.grower = *grower;
-  printRepairs(spec.value());
+  printRepairsAndWarnings(spec.value());
   base::StageTimer timer;
   TerminalProgress progress(args.has("--quiet"));
   auto world =

@@ -49,9 +49,8 @@ constexpr const char* kUsage =
     "Writes a heightmap of the box (default: the world's land) for a game engine, N × N\n"
     "samples edge to edge, evaluated at the export's own spacing: 16-bit, the box's heights\n"
     "min..max mapped to 0..65535 (exr and tif: float32 metres), and PATH's stem + .json:\n"
-    "bounds, metres per pixel, heights and the engine's import numbers. --bbox in degrees, --local "
-    "in metres of the world's\n"
-    "local frame (x east, y north). Engines:\n"
+    "bounds, metres per pixel, heights and the engine's import numbers. --bbox in degrees,\n"
+    "--local in metres of the world's local frame (x east, y north). Engines:\n"
     "  unity   r16 (RAW, little-endian), row 0 south (Flip Vertically off), N = 2^n+1, 33..4097\n"
     "  unreal  png16 (default) or r16, row 0 north, N from its component rules (505, 1009,\n"
     "          2017, 4033, 8129, ...); --tiles AxB writes PATH_x{A}_y{B} tiles sharing edges\n"
@@ -619,16 +618,16 @@ int runExportHeightmap(const std::vector<std::string>& raw) {
                       "-o", "--erode", "--iterations", "--talus", "--vegetation"},
                      {"--help", "-h", "--quiet", "--splat"});
   if (!parsed)
-    return usageError(parsed.error(), kUsage);
+    return usageError(parsed.error(), "export-heightmap");
   const CliArgs& args = parsed.value();
   if (args.has("--help") || args.has("-h"))
     return printUsage(kUsage);
   auto options = parseOptions(args);
-  if (!options) // a refused value: exit 1 with its message (2 is for an unparsable line)
-    return fail(options.error());
+  if (!options) // a refused value is a wrong command line, like an unparsable one
+    return usageError(options.error(), "export-heightmap");
   if (auto writable = checkWritable(options.value().output); !writable)
     return fail(writable.error());
-  auto world = store::readWorldFile(args.positional()[0]);
+  auto world = readWorldArgument(args.positional()[0], generateFirstHint(args.positional()[0]));
   if (!world)
     return fail(world.error());
   return exportHeightmap(options.value(), std::move(world).value());

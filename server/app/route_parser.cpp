@@ -51,6 +51,7 @@ base::Result<ParsedTarget> parseTarget(const std::string& target) {
   const std::size_t q = target.find('?');
   const std::string path = target.substr(0, q);
   ParsedTarget out;
+  out.trailingSlash = path.size() > 1 && path.back() == '/';
   std::size_t start = 1;
   while (start <= path.size()) {
     const std::size_t end = std::min(path.find('/', start), path.size());

@@ -13,6 +13,7 @@ namespace strahler::app {
 struct ParsedTarget {
   std::vector<std::string> segments;        ///< "/worlds/a/tiles" → {"worlds", "a", "tiles"}.
   std::map<std::string, std::string> query; ///< Decoded; each key at most once.
+  bool trailingSlash = false;               ///< The path ends with '/' (and is not "/" itself).
 };
 
 /// Splits and percent-decodes a request target. kInvalidInput (→ 400) for: not starting

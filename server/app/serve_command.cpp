@@ -29,9 +29,9 @@ namespace {
 constexpr std::chrono::milliseconds kDrainWindow{4000};
 
 constexpr const char* kServeUsage =
-    "usage: strahler serve [WORLD.world ...] [--coast FILE.geojson [--params FILE.json] [--seed "
-    "N]\n"
-    "                      [--features FILE.geojson]]\n"
+    "usage: strahler serve [WORLD.world ...]\n"
+    "                      [--coast FILE.geojson [--params FILE.json] [--seed N]\n"
+    "                       [--features FILE.geojson]]\n"
     "                      [--host 127.0.0.1] [--port 8080] [--threads N] [--workers N]\n"
     "                      [--cache-mb M] [--cache-dir DIR] [--web-root DIR] [--public-url URL]\n"
     "                      [--trusted-proxies LIST]\n"
@@ -77,7 +77,9 @@ loadWorlds(const CliArgs& args) {
   std::vector<std::pair<std::string, construction::WorldData>> worlds;
   std::set<std::string> taken;
   for (const std::string& path : args.positional()) {
-    STRAHLER_ASSIGN_OR_RETURN(construction::WorldData data, store::readWorldFile(path));
+    STRAHLER_ASSIGN_OR_RETURN(
+        construction::WorldData data,
+        readWorldArgument(path, "serve a coastline with 'strahler serve --coast " + path + "'"));
     worlds.emplace_back(worldId(std::filesystem::path(path).stem().string(), taken),
                         std::move(data));
   }
@@ -94,7 +96,7 @@ loadWorlds(const CliArgs& args) {
   sources.repair = args.has("--repair");
   STRAHLER_ASSIGN_OR_RETURN(const input::InputLimits limits, worldLimits(args));
   STRAHLER_ASSIGN_OR_RETURN(input::WorldSpec spec, input::loadWorldSpec(sources, limits));
-  printRepairs(spec);
+  printRepairsAndWarnings(spec);
   TerminalProgress progress(args.has("--quiet"));
   STRAHLER_ASSIGN_OR_RETURN(LoadedWorld loaded,
                             loadOrGenerateWorld(spec,
@@ -116,7 +118,7 @@ int runServe(const std::vector<std::string>& raw) {
                                 kMaxAreaOption, kMaxExtentOption},
                                {"--quiet", "--repair", "--help", "-h"});
   if (!parsed)
-    return usageError(parsed.error(), kServeUsage);
+    return usageError(parsed.error(), "serve");
   const CliArgs& args = parsed.value();
   if (args.has("--help") || args.has("-h"))
     return printUsage(kServeUsage);
@@ -128,12 +130,16 @@ int runServe(const std::vector<std::string>& raw) {
   auto perClient = args.getInt("--max-client-connections", 0, 1 << 20);
   for (const auto* r : {&port, &threads, &workers, &cacheMb, &perClient})
     if (!*r)
-      return usageError(r->error(), kServeUsage);
+      return usageError(r->error(), "serve");
+  if (auto seed = args.getU64("--seed"); !seed)
+    return usageError(seed.error(), "serve");
+  if (auto limits = worldLimits(args); !limits)
+    return usageError(limits.error(), "serve");
   std::string publicUrl;
   if (const auto url = args.get("--public-url")) {
     auto checked = parsePublicUrl(*url);
     if (!checked)
-      return usageError(checked.error(), kServeUsage);
+      return usageError(checked.error(), "serve");
     publicUrl = std::move(checked).value();
   }
   auto trustedProxies =
@@ -141,7 +147,7 @@ int runServe(const std::vector<std::string>& raw) {
   if (!trustedProxies)
     return usageError(base::makeError(base::ErrorCode::kInvalidInput,
                                       "--trusted-proxies: " + trustedProxies.error().message),
-                      kServeUsage);
+                      "serve");
 
   // Block the stop signals in every thread; the main thread waits for them below.
   sigset_t stopSignals;

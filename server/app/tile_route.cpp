@@ -51,7 +51,11 @@ base::Result<TileRequest> parseTileRoute(const std::string& world,
       formatName = "terrarium";
   }
   TileRequest request;
-  STRAHLER_ASSIGN_OR_RETURN(request.format, parseTileFormat(formatName));
+  auto format = parseTileFormat(formatName);
+  if (!format) // name only what this path serves: the other formats have paths of their own
+    return badTile("unknown tile format '" + formatName.substr(0, 64) + "' (under /" + s[2] +
+                   "/: png, terrarium, png16, tif, exr, drc, glb or relief)");
+  request.format = format.value();
   if (request.kind() == TileKind::kTerrain)
     return badTile("Cesium terrain tiles are served under /worlds/{id}/cesium/ (TMS rows)");
   if (request.kind() == TileKind::kVector)

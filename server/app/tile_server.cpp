@@ -159,6 +159,11 @@ void TileServer::handle(const http::Request& request, std::function<void(http::R
   if (!parsed)
     return done(http::errorResponse(400, parsed.error().message));
   const ParsedTarget& target = parsed.value();
+  if (target.trailingSlash) // one spelling per resource: "…/389.png/" is not "…/389.png"
+    return done(http::errorResponse(
+        404, "no such resource: '" +
+                 request.target.substr(0, request.target.find('?')).substr(0, 200) +
+                 "' ends with '/'; resources are named without it"));
   const Route route = routeOf(target.segments);
   switch (route.endpoint) {
   case Endpoint::kIndex:

@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -80,9 +81,9 @@ constexpr const char* kTileUsage =
     "format terrain only: quantized-mesh-1.0 with normals, water mask and metadata.\n"
     "png is Terrain-RGB; relief an RGB picture (height tint x hillshade);\n"
     "mvt a Mapbox Vector Tile (web only: water, contours, rivers, features);\n"
-    "json the trees and bushes of a tile (web only, zooms 16..18; see the README).\n"
+    "json the trees and bushes of a tile (web only, zooms 16..18; docs/http.md).\n"
     "--layer: a derived layer as a grey PNG (slope, aspect, illumination, hillshade,\n"
-    "humidity, sediment, vegetation, water; see the README), instead of --format;\n"
+    "humidity, sediment, vegetation, water; docs/http.md), instead of --format;\n"
     "--species for vegetation, --azimuth/--altitude for hillshade.\n"
     "N: pixels per side for rasters (16..1024, default 256),\n"
     "quads per side for meshes (4..256, default 64).\n";
@@ -102,24 +103,43 @@ struct WorldCommand {
   std::size_t fileBytes = 0;
 };
 
-/// Parses `WORLD` plus options (`required` ones must be there), then reads the world file.
-/// Returns an exit code instead when either fails.
+template <class T> base::Status statusOf(const base::Result<T>& result) {
+  if (result)
+    return base::Ok{};
+  return result.error();
+}
+
+/// Checks a command's option values before its world file is read: a wrong command line is
+/// found (exit 2) without reading any file.
+using OptionCheck = std::function<base::Status(const CliArgs&)>;
+
+/// Parses `WORLD` plus options (`required` ones must be there), runs `check`, then reads the
+/// world file. Returns an exit code instead when any of them fails.
 std::variant<WorldCommand, int> openWorld(const std::string& name,
                                           const std::vector<std::string>& raw,
                                           const std::set<std::string>& valued, const char* usage,
-                                          const std::set<std::string>& required = {}) {
+                                          const std::set<std::string>& required = {},
+                                          const OptionCheck& check = {}) {
   auto parsed = CliArgs::parse(name, raw, valued, {"--help", "-h"});
   if (!parsed)
-    return usageError(parsed.error(), usage);
+    return usageError(parsed.error(), name);
   if (parsed.value().has("--help") || parsed.value().has("-h"))
     return printUsage(usage);
-  if (parsed.value().positional().size() != 1)
-    return usageError({base::ErrorCode::kInvalidInput, "expected exactly one WORLD file"}, usage);
+  const std::vector<std::string>& positional = parsed.value().positional();
+  if (positional.size() != 1)
+    return usageError({base::ErrorCode::kInvalidInput,
+                       positional.empty() ? "expected a WORLD file"
+                                          : "expected one WORLD file, got " +
+                                                std::to_string(positional.size()) + " arguments"},
+                      name);
   for (const std::string& option : required)
     if (!parsed.value().get(option))
-      return usageError({base::ErrorCode::kInvalidInput, "missing " + option}, usage);
-  const std::string path = parsed.value().positional()[0];
-  auto world = store::readWorldFile(path);
+      return usageError({base::ErrorCode::kInvalidInput, "missing " + option}, name);
+  if (check)
+    if (auto checked = check(parsed.value()); !checked)
+      return usageError(checked.error(), name);
+  const std::string path = positional[0];
+  auto world = readWorldArgument(path, generateFirstHint(path));
   if (!world)
     return fail(world.error());
   std::error_code ec;
@@ -140,13 +160,13 @@ int runInfo(const std::vector<std::string>& raw) {
 }
 
 int runRender(const std::vector<std::string>& raw) {
-  auto opened = openWorld("render", raw, {"--size", "-o"}, kRenderUsage, {"-o"});
+  const auto sizeOf = [](const CliArgs& args) { return args.getInt("--size", 64, 8192); };
+  auto opened = openWorld("render", raw, {"--size", "-o"}, kRenderUsage, {"-o"},
+                          [&](const CliArgs& args) { return statusOf(sizeOf(args)); });
   if (auto* code = std::get_if<int>(&opened))
     return *code;
   WorldCommand& c = std::get<WorldCommand>(opened);
-  auto size = c.args.getInt("--size", 64, 8192);
-  if (!size)
-    return usageError(size.error(), kRenderUsage);
+  const auto size = sizeOf(c.args);
   const std::string out = c.args.get("-o").value_or("");
   const construction::World world(std::move(c.world));
   const auto image =
@@ -156,68 +176,73 @@ int runRender(const std::vector<std::string>& raw) {
   return 0;
 }
 
-int runTile(const std::vector<std::string>& raw) {
-  auto opened = openWorld("tile", raw,
-                          {"--scheme", "--z", "--x", "--y", "--format", "--size", "-o", "--layer",
-                           "--species", "--azimuth", "--altitude"},
-                          kTileUsage, {"--z", "--x", "--y", "-o"});
-  if (auto* code = std::get_if<int>(&opened))
-    return *code;
-  WorldCommand& c = std::get<WorldCommand>(opened);
-  const std::string scheme = c.args.get("--scheme").value_or("web");
+namespace {
+
+/// The tile `tile`'s options ask for (everything but the world), or why they are wrong.
+base::Result<TileRequest> tileRequestOf(const CliArgs& args) {
+  const auto error = [](std::string message) {
+    return base::makeError(base::ErrorCode::kInvalidInput, std::move(message));
+  };
+  const std::string scheme = args.get("--scheme").value_or("web");
   if (scheme != "web" && scheme != "local" && scheme != "cesium")
-    return usageError({base::ErrorCode::kInvalidInput, "--scheme must be web, local or cesium"},
-                      kTileUsage);
-  auto z = c.args.getInt("--z", 0, 30);
-  auto x = c.args.getInt("--x", 0, (1ll << 30) - 1);
-  auto y = c.args.getInt("--y", 0, (1ll << 30) - 1);
-  auto size = c.args.getInt("--size", 1, 1 << 20);
-  const auto layerName = c.args.get("--layer");
-  if (layerName.has_value() == c.args.get("--format").has_value())
-    return usageError({base::ErrorCode::kInvalidInput, "give --format or --layer (one of them)"},
-                      kTileUsage);
-  base::Result<TileFormat> format = TileFormat::kLayerPng;
-  if (!layerName)
-    format = parseTileFormat(c.args.get("--format").value_or(""));
-  base::Result<LayerOptions> layer = LayerOptions{};
-  for (const char* option : {"--species", "--azimuth", "--altitude"})
-    if (!layerName && c.args.get(option))
-      return usageError({base::ErrorCode::kInvalidInput, std::string(option) + " needs --layer"},
-                        kTileUsage);
-  if (layerName) {
+    return error("--scheme must be web, local or cesium");
+  STRAHLER_ASSIGN_OR_RETURN(const auto z, args.getInt("--z", 0, 30));
+  STRAHLER_ASSIGN_OR_RETURN(const auto x, args.getInt("--x", 0, (1ll << 30) - 1));
+  STRAHLER_ASSIGN_OR_RETURN(const auto y, args.getInt("--y", 0, (1ll << 30) - 1));
+  STRAHLER_ASSIGN_OR_RETURN(const auto size, args.getInt("--size", 1, 1 << 20));
+  const auto layerName = args.get("--layer");
+  if (layerName.has_value() == args.get("--format").has_value())
+    return error("give --format or --layer (one of them)");
+  TileRequest request;
+  request.format = TileFormat::kLayerPng;
+  if (!layerName) {
+    for (const char* option : {"--species", "--azimuth", "--altitude"})
+      if (args.get(option))
+        return error(std::string(option) + " needs --layer");
+    STRAHLER_ASSIGN_OR_RETURN(request.format, parseTileFormat(args.get("--format").value_or("")));
+  } else {
     std::map<std::string, std::string> query;
     for (const char* option : {"species", "azimuth", "altitude"})
-      if (auto value = c.args.get(std::string("--") + option))
+      if (auto value = args.get(std::string("--") + option))
         query[option] = *value;
-    layer = parseLayerOptions(*layerName, query);
-    if (!layer)
-      return usageError(layer.error(), kTileUsage);
+    STRAHLER_ASSIGN_OR_RETURN(request.options.layer, parseLayerOptions(*layerName, query));
     if (scheme == "cesium")
-      return usageError({base::ErrorCode::kInvalidInput, "--layer goes with --scheme web or local"},
-                        kTileUsage);
+      return error("--layer goes with --scheme web or local");
   }
-  for (const base::Error* e :
-       {z.ok() ? nullptr : &z.error(), x.ok() ? nullptr : &x.error(), y.ok() ? nullptr : &y.error(),
-        size.ok() ? nullptr : &size.error(), format.ok() ? nullptr : &format.error()})
-    if (e)
-      return usageError(*e, kTileUsage);
-  if ((scheme == "cesium") != (format.value() == TileFormat::kQuantizedMesh))
-    return usageError(
-        {base::ErrorCode::kInvalidInput, "--format terrain goes with --scheme cesium, and only it"},
-        kTileUsage);
-  const TileService service(std::move(c.world));
-  TileRequest request;
+  if (size) {
+    const TileSizeRange range = tileSizeRange(tileKind(request.format));
+    if (*size < range.min || *size > range.max)
+      return error("option '--size' must be an integer in [" + std::to_string(range.min) + ", " +
+                   std::to_string(range.max) + "] for " + canonicalFormatName(request.format) +
+                   " tiles, got '" + std::to_string(*size) + "'");
+  }
+  if ((scheme == "cesium") != (request.format == TileFormat::kQuantizedMesh))
+    return error("--format terrain goes with --scheme cesium, and only it");
   request.scheme = scheme == "local"    ? tiling::SchemeKind::kLocal
                    : scheme == "cesium" ? tiling::SchemeKind::kGeographic
                                         : tiling::SchemeKind::kWebMercator;
-  request.tile = {static_cast<int>(*z.value()), *x.value(), *y.value()};
+  request.tile = {static_cast<int>(z.value_or(0)), x.value_or(0), y.value_or(0)};
   if (request.scheme == tiling::SchemeKind::kGeographic) { // a TMS row, as in Cesium's URLs
     request.tile.y = (std::int64_t{1} << request.tile.z) - 1 - request.tile.y;
     request.options.extensions = kOctVertexNormals | kWaterMask | kMetadata;
   }
-  request.format = format.value();
-  request.options.size = static_cast<int>(size.value().value_or(0));
-  request.options.layer = layer.value();
+  request.options.size = static_cast<int>(size.value_or(0));
+  return request;
+}
+
+} // namespace
+
+int runTile(const std::vector<std::string>& raw) {
+  auto opened = openWorld("tile", raw,
+                          {"--scheme", "--z", "--x", "--y", "--format", "--size", "-o", "--layer",
+                           "--species", "--azimuth", "--altitude"},
+                          kTileUsage, {"--z", "--x", "--y", "-o"},
+                          [](const CliArgs& args) { return statusOf(tileRequestOf(args)); });
+  if (auto* code = std::get_if<int>(&opened))
+    return *code;
+  WorldCommand& c = std::get<WorldCommand>(opened);
+  const TileRequest request = tileRequestOf(c.args).value(); // checked by openWorld
+  const TileService service(std::move(c.world));
   auto tile = service.render(request);
   if (!tile)
     return fail(tile.error());
@@ -303,13 +328,13 @@ quality::ReliefReport reliefReport(const quality::HeightRaster& raster,
 
 int analyzeDem(const CliArgs& args) {
   if (!args.positional().empty())
-    return usageError({base::ErrorCode::kInvalidInput, "--dem takes no WORLD file"}, kAnalyzeUsage);
+    return usageError({base::ErrorCode::kInvalidInput, "--dem takes no WORLD file"}, "analyze");
   auto cellSize = demCellSize(args);
   if (!cellSize)
-    return usageError(cellSize.error(), kAnalyzeUsage);
+    return usageError(cellSize.error(), "analyze");
   auto windows = windowOptions(args);
   if (!windows)
-    return usageError(windows.error(), kAnalyzeUsage);
+    return usageError(windows.error(), "analyze");
   const std::string path = args.get("--dem").value_or("");
   auto raster = quality::readDemFile(path, cellSize.value());
   if (!raster)
@@ -327,26 +352,29 @@ int runAnalyze(const std::vector<std::string>& raw) {
       {"--cell-size", "--dem", "--window-km", "--windows", "--window-cell", "--compare-dem"},
       {"--help", "-h"});
   if (!parsed)
-    return usageError(parsed.error(), kAnalyzeUsage);
+    return usageError(parsed.error(), "analyze");
   if (parsed.value().has("--help") || parsed.value().has("-h"))
     return printUsage(kAnalyzeUsage);
   if (parsed.value().get("--dem") && parsed.value().get("--compare-dem"))
     return usageError({base::ErrorCode::kInvalidInput, "--compare-dem needs a WORLD, not --dem"},
-                      kAnalyzeUsage);
+                      "analyze");
   if (parsed.value().get("--dem"))
     return analyzeDem(parsed.value());
   auto opened = openWorld(
       "analyze", raw, {"--cell-size", "--window-km", "--windows", "--window-cell", "--compare-dem"},
-      kAnalyzeUsage);
+      kAnalyzeUsage, {}, [](const CliArgs& args) -> base::Status {
+        STRAHLER_RETURN_IF_ERROR(args.getInt("--cell-size", 5, 1000));
+        return statusOf(windowOptions(args));
+      });
   if (auto* code = std::get_if<int>(&opened))
     return *code;
   WorldCommand& c = std::get<WorldCommand>(opened);
   auto cell = c.args.getInt("--cell-size", 5, 1000);
   if (!cell)
-    return usageError(cell.error(), kAnalyzeUsage);
+    return usageError(cell.error(), "analyze");
   auto windows = windowOptions(c.args);
   if (!windows)
-    return usageError(windows.error(), kAnalyzeUsage);
+    return usageError(windows.error(), "analyze");
   std::optional<quality::HeightRaster> reference;
   if (const auto dem = c.args.get("--compare-dem")) {
     auto read = quality::readDemFile(*dem, std::nullopt);

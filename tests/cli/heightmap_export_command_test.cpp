@@ -205,30 +205,32 @@ TEST(ExportHeightmap, RefusesBadInputWithAPreciseMessageAndWritesNothing) {
   const fs::path dir = outputDir("refused");
   const std::string world = islandWorld().string();
   const std::string out = " -o " + (dir / "h.raw").string();
+  // Exit 2: the command line alone is wrong; exit 1: the box does not fit the world read.
   const struct {
     std::string args;
+    int exitCode;
     std::string message;
   } cases[] = {
-      {"--engine unity --size 1000", "the nearest valid sizes are 513 or 1025"},
-      {"--engine unity --size 5000", "the nearest valid sizes are 4097"},
-      {"--engine unreal --size 1000", "the nearest valid sizes are 993 or 1009"},
-      {"--engine unity --format png16", "Unity imports 16-bit RAW heightmaps only"},
-      {"--engine unity --format exr", "Unity imports 16-bit RAW heightmaps only"},
-      {"--engine unreal --format exr", "Unreal imports 16-bit PNG or RAW heightmaps"},
-      {"--engine godot --format tif", "Godot cannot load TIFF"},
-      {"--engine raw --format jpg", "--format jpg: use r16, png16, exr or tif"},
-      {"--engine cryengine", "--engine cryengine: use unity, unreal, godot or raw"},
-      {"--engine unity --bbox 10,50,11", "--bbox"},
-      {"--engine unity --bbox 100,10,101,11", "does not overlap the world's land"},
-      {"--engine raw --local 1e7,1e7,2e7,2e7", "does not overlap the world's land"},
-      {"--engine raw --local 5,0,1,1", "expected X0 < X1 and Y0 < Y1"},
-      {"--engine unity --tiles 2x2", "tiled heightmaps are Unreal's import"},
-      {"--engine unreal --size 505 --tiles 5x5", "do not split evenly"},
-      {"--engine unreal --format png16 --size 8129", "give --tiles"},
+      {"--engine unity --size 1000", 2, "the nearest valid sizes are 513 or 1025"},
+      {"--engine unity --size 5000", 2, "the nearest valid sizes are 4097"},
+      {"--engine unreal --size 1000", 2, "the nearest valid sizes are 993 or 1009"},
+      {"--engine unity --format png16", 2, "Unity imports 16-bit RAW heightmaps only"},
+      {"--engine unity --format exr", 2, "Unity imports 16-bit RAW heightmaps only"},
+      {"--engine unreal --format exr", 2, "Unreal imports 16-bit PNG or RAW heightmaps"},
+      {"--engine godot --format tif", 2, "Godot cannot load TIFF"},
+      {"--engine raw --format jpg", 2, "--format jpg: use r16, png16, exr or tif"},
+      {"--engine cryengine", 2, "--engine cryengine: use unity, unreal, godot or raw"},
+      {"--engine unity --bbox 10,50,11", 2, "--bbox"},
+      {"--engine unity --bbox 100,10,101,11", 1, "does not overlap the world's land"},
+      {"--engine raw --local 1e7,1e7,2e7,2e7", 1, "does not overlap the world's land"},
+      {"--engine raw --local 5,0,1,1", 2, "expected X0 < X1 and Y0 < Y1"},
+      {"--engine unity --tiles 2x2", 2, "tiled heightmaps are Unreal's import"},
+      {"--engine unreal --size 505 --tiles 5x5", 2, "do not split evenly"},
+      {"--engine unreal --format png16 --size 8129", 2, "give --tiles"},
   };
   for (const auto& c : cases) {
     const ProcessRun run = runStrahler("export-heightmap " + world + " " + c.args + out);
-    EXPECT_EQ(run.exitCode, 1) << c.args << ": " << run.err;
+    EXPECT_EQ(run.exitCode, c.exitCode) << c.args << ": " << run.err;
     EXPECT_NE(run.err.find(c.message), std::string::npos) << c.args << ": " << run.err;
   }
   EXPECT_TRUE(fs::is_empty(dir));
@@ -340,6 +342,53 @@ TEST(EngineHeightmap, ValidSizesFollowEachEnginesRule) {
   EXPECT_TRUE(strahler::app::validSizes(Engine::kGodot).empty());
   EXPECT_TRUE(strahler::app::checkSize(Engine::kGodot, 100));
   EXPECT_FALSE(strahler::app::checkSize(Engine::kRaw, 1));
+}
+
+TEST(ExportHeightmap, SidecarsGiveSeaLevelsSixteenBitValueAndTheNorthRowOfEachFile) {
+  const fs::path dir = outputDir("sea-level");
+  const ProcessRun unity =
+      runStrahler("export-heightmap " + islandWorld().string() +
+                  " --engine unity --size 129 --splat -o " + (dir / "h.raw").string());
+  ASSERT_EQ(unity.exitCode, 0) << unity.err;
+  const nlohmann::json side = readSidecar(dir / "h.json");
+  ASSERT_TRUE(side["seaLevel"]["value16"].is_number()) << side.dump(2);
+  const int sea = side["seaLevel"]["value16"];
+  const double lo = side["minHeight"], hi = side["maxHeight"];
+  ASSERT_LT(lo, 0.0); // the default land's box reaches into the sea
+  // The samples below the value are under the sea and those above it on land: the file, read
+  // with the sidecar's own encoding, agrees with the value it gives for 0 m.
+  int wet = 0, dry = 0;
+  for (const std::uint16_t v : readR16(dir / "h.raw")) {
+    const double height = lo + v / 65535.0 * (hi - lo);
+    if (v < sea) {
+      EXPECT_LE(height, (hi - lo) / 65535.0);
+      ++wet;
+    } else if (v > sea) {
+      EXPECT_GE(height, -(hi - lo) / 65535.0);
+      ++dry;
+    }
+  }
+  EXPECT_GT(wet, 100);
+  EXPECT_GT(dry, 100);
+  EXPECT_NE(side["northRow"]["heightmap"].get<std::string>().find("the last row; row 0 is the "
+                                                                  "south edge"),
+            std::string::npos);
+  EXPECT_NE(side["northRow"]["splatMaps"].get<std::string>().find("row 0, the first row: unlike "
+                                                                  "this heightmap"),
+            std::string::npos);
+  // Unreal: row 0 is north in every file; float files hold metres, so sea level is 0.
+  const ProcessRun unreal =
+      runStrahler("export-heightmap " + islandWorld().string() + " --engine unreal --size 505 -o " +
+                  (dir / "u.png").string());
+  ASSERT_EQ(unreal.exitCode, 0) << unreal.err;
+  const nlohmann::json unrealSide = readSidecar(dir / "u.json");
+  EXPECT_EQ(unrealSide["northRow"]["heightmap"], "row 0, the first row");
+  EXPECT_TRUE(unrealSide["seaLevel"]["value16"].is_number());
+  const ProcessRun exr =
+      runStrahler("export-heightmap " + islandWorld().string() +
+                  " --engine raw --format exr --size 65 -o " + (dir / "r.exr").string());
+  ASSERT_EQ(exr.exitCode, 0) << exr.err;
+  EXPECT_EQ(readSidecar(dir / "r.json")["seaLevel"]["value"], 0.0);
 }
 
 TEST(EngineHeightmap, QuantizeMapsTheRangeOntoSixteenBits) {

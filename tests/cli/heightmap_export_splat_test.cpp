@@ -193,11 +193,11 @@ TEST(ExportHeightmapSplat, RefusesWhatItCannotWrite) {
   const std::string world = "export-heightmap " + islandWorld().string();
   const ProcessRun big =
       runStrahler(world + " --engine raw --size 4097 --splat -o " + (dir / "h.r16").string());
-  EXPECT_EQ(big.exitCode, 1);
+  EXPECT_EQ(big.exitCode, 2); // the command line alone is wrong
   EXPECT_NE(big.err.find("at most 4096 samples per side"), std::string::npos) << big.err;
   const ProcessRun untiled = runStrahler(
       world + " --engine unreal --format r16 --size 8129 --splat -o " + (dir / "h.r16").string());
-  EXPECT_EQ(untiled.exitCode, 1);
+  EXPECT_EQ(untiled.exitCode, 2);
   EXPECT_NE(untiled.err.find("or Unreal --tiles"), std::string::npos) << untiled.err;
   EXPECT_TRUE(fs::is_empty(dir));
 }

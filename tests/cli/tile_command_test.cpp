@@ -119,8 +119,11 @@ TEST(TileCommand, WritesEveryFormatAndRejectsBadRequests) {
   const ProcessRun deep = run(base + "--z 19 --x 0 --y 0 --format png -o x.png");
   EXPECT_EQ(deep.exitCode, 1);
   const ProcessRun size = run(base + "--z 1 --x 0 --y 0 --format png --size 4096 -o x.png");
-  EXPECT_EQ(size.exitCode, 1);
-  EXPECT_NE(size.err.find("size 4096 is outside"), std::string::npos) << size.err;
+  EXPECT_EQ(size.exitCode, 2); // a wrong command line, as render's --size
+  EXPECT_NE(size.err.find("option '--size' must be an integer in [16, 1024] for png tiles, got "
+                          "'4096'"),
+            std::string::npos)
+      << size.err;
   const ProcessRun format = run(base + "--z 1 --x 0 --y 0 --format bmp -o x.bmp");
   EXPECT_EQ(format.exitCode, 2);
   EXPECT_NE(format.err.find("unknown tile format 'bmp'"), std::string::npos) << format.err;

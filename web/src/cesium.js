@@ -64,12 +64,17 @@ function morningSun(viewer, world) {
   viewer.clock.shouldAnimate = false;
 }
 
+/** Writes `url` into `element` with line breaks allowed only after its slashes, never mid-word. */
+function showUrl(element, url) {
+  element.replaceChildren(...url.split(/(?<=\/)/).flatMap((part) => [part, document.createElement('wbr')]));
+}
+
 async function main() {
   const { selected: world } = await loadWorlds();
   rememberWorld(world);
   const area = Number(world.areaKm2);
   $('world-info').textContent = `${world.name ?? world.id}${Number.isFinite(area) ? ` · ${area.toFixed(0)} km²` : ''}`;
-  $('layer-url').textContent = `${worldUrl(world, CESIUM_TERRAIN)}layer.json`;
+  showUrl($('layer-url'), `${worldUrl(world, CESIUM_TERRAIN)}layer.json`);
   $('viewer-link').href = `./?world=${encodeURIComponent(world.id)}`;
 
   const timings = new TileTimings();

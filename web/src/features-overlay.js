@@ -75,6 +75,7 @@ export class FeaturesOverlay {
     const request = ++this.request;
     this.setMarkers([]);
     this.checkbox.disabled = true;
+    this.setShown(false);
     this.note.textContent = '';
     if (world.demSource) return; // a static archive: no features document
     let collection = null;
@@ -92,8 +93,15 @@ export class FeaturesOverlay {
       return;
     }
     this.checkbox.disabled = false;
+    this.setShown(true);
     this.setMarkers(featureMarkers(collection));
     this.apply();
+  }
+
+  /** The checkbox appears only for a world that has drawn features: no control for nothing. */
+  setShown(shown) {
+    const label = this.checkbox.closest('label');
+    if (label) label.hidden = !shown;
   }
 
   setMarkers(markers) {

@@ -1,7 +1,7 @@
 // The derived layers the viewer can lay over the terrain (GET /worlds/{id}/layers/{name}/…),
 // each with the colour ramp that draws it and the legend of that ramp.
 //
-// Layer tiles are grey PNGs (README "Layer tiles"). MapLibre cannot colour a raster by value
+// Layer tiles are grey PNGs (docs/http.md, "Layer tiles"). MapLibre cannot colour a raster by value
 // (no `raster-color` in MapLibre GL JS 6), so their tiles go through the "grey" protocol: the
 // browser decodes the PNG, each grey code is looked up in a 256-entry table built from the
 // ramp, and the coloured image goes to MapLibre. The legend is drawn from the same table, so it

@@ -12,22 +12,33 @@ import { greyUrl, registerGreyProtocol } from './layer-ramps.js';
 import { LayerSwitcher } from './layer-switcher.js';
 
 const $ = (id) => document.getElementById(id);
-const FIT = { padding: 40, duration: 0 };
+// The whole island in view beside the panel (250 px wide, 10 px from the left edge).
+const FIT = { padding: { top: 40, bottom: 40, right: 40, left: 300 }, duration: 0 };
+
+/** River types in plain words; the Rosgen letters stay in the details. */
+const RIVER_TYPES = {
+  B: 'mountain stream', E: 'meandering river', D: 'braided river', 'D-delta': 'delta channel',
+};
 
 function describeWorld(world) {
   const area = Number(world.areaKm2);
-  return `${world.name ?? world.id} · ${Number.isFinite(area) ? `${area.toFixed(0)} km²` : ''}` +
-    (world.mouths !== undefined ? ` · ${world.mouths} mouths` : '');
+  return `${world.name ?? world.id}${Number.isFinite(area) ? ` · ${area.toFixed(0)} km²` : ''}`;
 }
 
-function showLegend(element) {
+function describeWorldDetails(world) {
+  return world.mouths !== undefined ? `${world.mouths} river mouths` : '';
+}
+
+function showLegend(element, codes) {
   element.replaceChildren(...Object.entries(ROSGEN_COLOURS).map(([type, colour]) => {
     const item = document.createElement('span');
     item.className = 'legend-item';
     item.style.setProperty('--swatch', colour);
-    item.textContent = `Rosgen ${type}`;
+    item.textContent = RIVER_TYPES[type] ?? type;
     return item;
   }));
+  codes.textContent = `Rosgen types: ${Object.keys(ROSGEN_COLOURS)
+    .map((type) => `${type} ${RIVER_TYPES[type] ?? ''}`.trim()).join(', ')}`;
 }
 
 function setupWorldPicker(worlds, selected, onChange) {
@@ -55,7 +66,7 @@ async function main() {
   registerTimedProtocol(maplibregl, timings);
   window.strahlerLayerStats = registerGreyProtocol(maplibregl);
   showTimings($('timings'), timings);
-  showLegend($('legend'));
+  showLegend($('legend'), $('legend-codes'));
 
   const exaggeration = Number($('exaggeration').value);
   const map = new maplibregl.Map({
@@ -93,6 +104,7 @@ async function main() {
   const currentExaggeration = setupExaggeration(map);
   const showWorld = (world) => {
     $('world-info').textContent = describeWorld(world);
+    $('world-details').textContent = describeWorldDetails(world);
     if (!archive) rememberWorld(world);
   };
   showWorld(selected);

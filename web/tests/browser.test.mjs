@@ -130,10 +130,23 @@ describe('map viewer', () => {
     assert.ok(state.rivers > 0, 'no river feature is rendered');
   });
 
-  test('reports the server timing of its tiles', async () => {
+  test('shows river types in plain words, and timings and counts only in its details', async () => {
     const s = await page.evaluate(() => window.strahlerTimings.summary());
     assert.ok(s.count >= 1 && Number.isFinite(s.eval) && Number.isFinite(s.encode), JSON.stringify(s));
+    const legend = await page.locator('#legend').innerText();
+    assert.match(legend, /mountain stream/);
+    assert.doesNotMatch(legend, /Rosgen/);
+    assert.doesNotMatch(await page.locator('#world-info').innerText(), /mouths/);
+    // The default island has no drawn features: no checkbox for them.
+    assert.equal(await page.locator('#show-features').isVisible(), false);
+    // Collapsed, the details hide the timings; opened, they show them and the counts.
+    assert.equal(await page.locator('#timings').isVisible(), false);
+    await page.click('#details summary');
+    assert.equal(await page.locator('#timings').isVisible(), true);
     assert.match(await page.locator('#timings').innerText(), /evaluate \d/);
+    assert.match(await page.locator('#world-details').innerText(), /\d+ river mouths/);
+    assert.match(await page.locator('#legend-codes').innerText(), /Rosgen types: B mountain stream/);
+    await page.click('#details summary'); // collapsed again for the tests that follow
   });
 
   test('click on a river: popup with elevation, Strahler order, flow, Rosgen type and width', async () => {

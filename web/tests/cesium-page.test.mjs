@@ -139,7 +139,17 @@ describe('Cesium page', () => {
   test('reports the server timing of its terrain tiles', async () => {
     const s = await page.evaluate(() => window.strahlerCesium.timings.summary());
     assert.ok(s.count >= 1 && Number.isFinite(s.fetch), JSON.stringify(s));
+    assert.equal(await page.locator('#timings').isVisible(), false); // behind "Details"
+    await page.click('#details summary');
     assert.match(await page.locator('#timings').innerText(), /\d+ tiles/);
+    // The layer.json URL breaks only after a slash: no "htt p://".
+    const url = await page.locator('#layer-url').evaluate((code) => ({
+      text: code.textContent, breaks: code.querySelectorAll('wbr').length,
+      style: getComputedStyle(code).wordBreak,
+    }));
+    assert.match(url.text, /^http:\/\/127\.0\.0\.1:\d+\/worlds\/[\w-]+\/cesium\/layer\.json$/);
+    assert.equal(url.breaks, url.text.split('/').length);
+    assert.equal(url.style, 'normal');
   });
 
   test('refines when the camera comes close to the ground', async () => {

@@ -322,9 +322,15 @@ base::Result<geometry::Vec2> parsePosition(const Json& value, const std::string&
   if (!(lonLat[0] >= -180.0 && lonLat[0] <= 180.0))
     return makeError(ErrorCode::kOutOfRange,
                      where + ": longitude " + formatNumber(lonLat[0]) + " is outside [-180, 180]");
-  if (!(lonLat[1] >= -90.0 && lonLat[1] <= 90.0))
+  if (!(lonLat[1] >= -90.0 && lonLat[1] <= 90.0)) {
+    // A latitude past the pole with a longitude that could be one: most likely [lat, lon].
+    const bool swapped = lonLat[0] >= -90.0 && lonLat[0] <= 90.0;
     return makeError(ErrorCode::kOutOfRange,
-                     where + ": latitude " + formatNumber(lonLat[1]) + " is outside [-90, 90]");
+                     where + ": latitude " + formatNumber(lonLat[1]) + " is outside [-90, 90]" +
+                         (swapped ? "; are the coordinates swapped? GeoJSON positions are "
+                                    "[longitude, latitude]"
+                                  : ""));
+  }
   return geometry::Vec2{lonLat[0], lonLat[1]};
 }
 

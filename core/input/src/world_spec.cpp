@@ -3,6 +3,7 @@
 #include "json_util.h"
 #include "mouths.h"
 
+#include "strahler/input/canonical_coastline.h"
 #include "strahler/input/coastline.h"
 #include "strahler/input/feature_parser.h"
 
@@ -166,6 +167,9 @@ base::Result<WorldSpec> buildWorldSpec(std::string name, std::string_view coastG
   } else {
     STRAHLER_ASSIGN_OR_RETURN(spec.landLonLat, parseCoastline(coastGeoJson, limits));
   }
+  // The same land whichever way its rings run and wherever they start: one world, one key.
+  canonicalizeCoastline(spec.landLonLat);
+  spec.warnings = swappedCoordinateWarnings(spec.landLonLat);
   STRAHLER_RETURN_IF_ERROR(projectLand(spec, limits));
   const geometry::Aabb landBox = geometry::bounds(spec.landLonLat);
   for (std::size_t i = 0; i < params.constraints.size(); ++i) {

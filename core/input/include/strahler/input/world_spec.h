@@ -33,8 +33,10 @@ struct UserMouth {
 
 /// Everything that determines a world: land, parameters, seed, constraints.
 struct WorldSpec {
-  std::string name;                     ///< Human name (file stem or "default").
-  geometry::MultiPolygon landLonLat;    ///< Validated coastline, degrees.
+  std::string name; ///< Human name (file stem or "default").
+  /// Validated coastline, degrees, in canonical form (canonicalizeCoastline): the world and
+  /// its cache key do not depend on the rings' winding, start vertex or order.
+  geometry::MultiPolygon landLonLat;
   geometry::LocalProjection projection; ///< Centred on the land's centroid.
   geometry::MultiPolygon land;          ///< Local metres, outer rings CCW, holes CW.
   Params params;
@@ -44,6 +46,9 @@ struct WorldSpec {
   /// What --repair changed in the coastline (empty without it, or when nothing needed it).
   /// landLonLat is the repaired coastline, so the cache key follows the repaired geometry.
   std::vector<repair::Change> repairs;
+  /// Doubts about the input that do not stop it, one sentence each (coordinates that look
+  /// swapped: swappedCoordinateWarnings).
+  std::vector<std::string> warnings;
 
   /// Land area in km².
   double areaKm2() const noexcept;
