@@ -48,6 +48,9 @@ struct TerrainLaneArgs {
   std::array<const OctaveFades*, 2> fades{}; ///< of each group's spacing
   const noise::LatticeNoise* noise = nullptr;
   std::uint32_t gullySeed = 0; ///< shuffles the gully octaves' phases
+  /// Whether octaves 2–6 are gully octaves (false on eroded worlds: gradient noise, as the
+  /// erosion's residual carries the drainage below the graph's scale).
+  bool gullies = true;
   std::array<const geometry::Vec2*, 2> points{};
   std::size_t groups = 1;
   double* h = nullptr;

@@ -2,6 +2,7 @@
 
 #include "evaluation_lanes.h"
 #include "folds.h"
+#include "relief_field.h"
 #include "tributaries.h"
 
 #include "strahler/base/random.h"
@@ -149,7 +150,9 @@ World::World(WorldData data)
                        : nullptr),
       folds_(data_.features.mountains.empty()
                  ? nullptr
-                 : std::make_shared<detail::Folds>(data_, land_, worldBounds(data_))) {
+                 : std::make_shared<detail::Folds>(data_, land_, worldBounds(data_))),
+      relief_(data_.relief.empty() ? nullptr
+                                   : std::make_shared<detail::ReliefField>(data_.relief)) {
   hot_.reserve(data_.terrain.size());
   for (const primitives::TerrainPrimitive& t : data_.terrain) {
     const double radius2 = t.radius * t.radius;
@@ -254,7 +257,9 @@ double World::uncarvedHeight(Vec2 p, double spacing) const noexcept {
   Sample river;
   terrainLanes(1, &p, nullptr, {spacing, spacing}, terrainGrid_.cellAt(p), &h, &w);
   riversLanes(1, &p, spacing, &h, riverCells_[riverGrid_.cellIndexAt(p)], &river.h, &river.w);
-  return shapeCoast(p, {h, w}, river, Coast::kUnknown);
+  double height = shapeCoast(p, {h, w}, river, Coast::kUnknown);
+  addRelief(&p, spacing, &river.w, {&height, 1});
+  return height;
 }
 
 double World::carveTributaries(Vec2 p, double h, double spacing) const {
@@ -285,6 +290,7 @@ void World::terrainLanes(std::size_t lanes, const Vec2* first, const Vec2* secon
                                      {&firstFades, &secondFades},
                                      &noise_,
                                      gullySeed_,
+                                     !relief_,
                                      {first, second},
                                      second ? 2u : 1u,
                                      h,
@@ -319,6 +325,15 @@ void World::riversLanes(std::size_t lanes, const Vec2* points, double spacing,
     detail::riversPoint(args);
   else
     detail::riversLanes(args);
+}
+
+void World::addRelief(const Vec2* group, double spacing, const double* riverW,
+                      std::span<double> heights) const noexcept {
+  if (!relief_)
+    return;
+  for (std::size_t l = 0; l < heights.size(); ++l)
+    if (riverW[l] < 1.0) // a river's floor keeps its line and depth
+      heights[l] += relief_->at(group[l], spacing);
 }
 
 void World::insideLand(const Vec2* group, double* onLand) const noexcept {
@@ -376,7 +391,9 @@ World::Evaluation World::evaluateFrom(Vec2 p, double spacing,
   e.terrain = {h, w};
   e.rivers = river;
   e.tree = replace(e.terrain, e.rivers).h;
-  e.height = carveTributaries(p, shapeCoast(p, e.terrain, e.rivers, coast), spacing);
+  double height = shapeCoast(p, e.terrain, e.rivers, coast);
+  addRelief(&p, spacing, &river.w, {&height, 1});
+  e.height = carveTributaries(p, height, spacing);
   return e;
 }
 
@@ -450,12 +467,14 @@ void World::finishGroup(const Vec2* group, double spacing, const double* h, cons
   if (shore.coast == Coast::kInland) { // shapeCoast()'s inland case, without a call per sample
     for (std::size_t l = 0; l < n; ++l)
       heights[l] = replace({h[l], w[l]}, {riverH[l], riverW[l]}).h;
+    addRelief(group, spacing, riverW.data(), heights);
     carveGroup(group, spacing, heights);
     return;
   }
   if (shore.coast != Coast::kUnknown || !shore.segments) { // far at sea, or unknown
     for (std::size_t l = 0; l < n; ++l)
       heights[l] = shapeCoast(group[l], {h[l], w[l]}, {riverH[l], riverW[l]}, shore.coast);
+    addRelief(group, spacing, riverW.data(), heights);
     carveGroup(group, spacing, heights);
     return;
   }
@@ -471,6 +490,7 @@ void World::finishGroup(const Vec2* group, double spacing, const double* h, cons
   detail::coastLanes(
       {h, w, riverH.data(), riverW.data(), onLand.data(), shore2.data(), out.data()});
   std::copy_n(out.begin(), n, heights.begin());
+  addRelief(group, spacing, riverW.data(), heights);
   carveGroup(group, spacing, heights);
 }
 

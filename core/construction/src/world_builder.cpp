@@ -1,6 +1,7 @@
 #include "strahler/construction/world_builder.h"
 
 #include "drawn_mountains.h"
+#include "relief_erosion.h"
 
 #include "strahler/analysis/hydrology.h"
 #include "strahler/primitives/quantization.h"
@@ -96,6 +97,9 @@ base::Result<WorldData> generateWorldData(const input::WorldSpec& spec, std::str
     primitives::fitValleyRadii(data.rivers, data.terrain);
   if (progress)
     progress("primitives", 1.0);
+  if (timer)
+    timer->start("erosion");
+  detail::erodeRelief(data, progress);
   if (timer) {
     timer->finish();
     data.stageSeconds = timer->stages();

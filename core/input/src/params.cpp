@@ -29,7 +29,7 @@ struct Field {
 };
 
 // The JSON keys in canonical order; seed and constraints follow.
-constexpr std::array<Field, 27> kFields{{
+constexpr std::array<Field, 32> kFields{{
     {"edgeLength", &Params::edgeLength},
     {"sigma", &Params::sigma},
     {"delta", &Params::delta},
@@ -57,6 +57,11 @@ constexpr std::array<Field, 27> kFields{{
     {"braidedMaxDistance", &Params::braidedMaxDistance},
     {"deltaMinFlow", &Params::deltaMinFlow},
     {"tributaryLevels", &Params::tributaryLevels}, // canonical only when not 0
+    {"erosionCell", &Params::erosionCell}, // the four erosion keys: only when erosionSteps > 0
+    {"erosionSteps", &Params::erosionSteps},
+    {"erosionStrength", &Params::erosionStrength},
+    {"hillslopeDiffusivity", &Params::hillslopeDiffusivity},
+    {"erosionGrain", &Params::erosionGrain},
 }};
 
 std::string quoted(std::string_view key) {
@@ -385,6 +390,11 @@ base::Status validateParams(const Params& p) {
       {"braidedMaxDistance", p.braidedMaxDistance, 0.0, kInf, true, false, "m"},
       {"deltaMinFlow", p.deltaMinFlow, 0.0, kInf, true, false, "m³/s"},
       {"tributaryLevels", double(p.tributaryLevels), 0.0, 3.0, true, true, ""},
+      {"erosionCell", p.erosionCell, 30.0, 120.0, true, true, "m"},
+      {"erosionSteps", double(p.erosionSteps), 0.0, 200.0, true, true, ""},
+      {"erosionStrength", p.erosionStrength, 0.0, 5.0, true, true, ""},
+      {"hillslopeDiffusivity", p.hillslopeDiffusivity, 0.0, 5.0, true, true, ""},
+      {"erosionGrain", p.erosionGrain, 0.0, 5.0, true, true, ""},
   };
   for (const Range& r : ranges)
     STRAHLER_RETURN_IF_ERROR(checkRange(r));
@@ -442,6 +452,10 @@ std::string canonicalJson(const Params& params) {
   for (const Field& f : kFields) {
     if (std::string_view(f.name) == "tributaryLevels" && params.tributaryLevels == 0)
       continue; // worlds from before it keep their canonical text
+    if (params.erosionSteps == 0 && std::string_view(f.name).starts_with("erosion"))
+      continue; // likewise for worlds without erosion
+    if (params.erosionSteps == 0 && std::string_view(f.name) == "hillslopeDiffusivity")
+      continue;
     out += "\"" + std::string(f.name) + "\":";
     if (auto* d = std::get_if<double Params::*>(&f.member))
       out += formatNumber(params.*(*d));

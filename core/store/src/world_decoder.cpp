@@ -4,6 +4,7 @@
 // overflow.
 
 #include "feature_codec.h"
+#include "relief_codec.h"
 #include "world_proto.h"
 
 #include "strahler/input/params.h"
@@ -95,6 +96,9 @@ public:
     if (m_.has_features()) {
       STRAHLER_ASSIGN_OR_RETURN(world_.features, decodeFeatures(m_.features(), name_));
     }
+    if (m_.has_relief()) {
+      STRAHLER_ASSIGN_OR_RETURN(world_.relief, decodeRelief(m_.relief(), name_));
+    }
     return std::move(world_);
   }
 
@@ -161,9 +165,12 @@ private:
 };
 
 Status Decoder::decodeHeader() {
-  if (m_.format_version() != kWorldFormatVersion)
-    return corrupt("the payload says format version " + str(m_.format_version()) +
-                   " but the header says " + str(kWorldFormatVersion));
+  if (m_.format_version() != kWorldFormatVersion &&
+      m_.format_version() != kWorldFormatVersionWithoutRelief)
+    return corrupt("the payload says format version " + str(m_.format_version()) + ", not " +
+                   str(kWorldFormatVersionWithoutRelief) + " or " + str(kWorldFormatVersion));
+  if (m_.has_relief() && m_.format_version() != kWorldFormatVersion)
+    return corrupt("an erosion residual in a world of format version " + str(m_.format_version()));
   world_.generatorVersion = m_.generator_version();
   world_.cacheKey = m_.cache_key();
   world_.name = m_.name();

@@ -2,6 +2,7 @@
 // so that a world this encoder accepts always reads back equal.
 
 #include "feature_codec.h"
+#include "relief_codec.h"
 #include "world_proto.h"
 
 #include "strahler/input/params.h"
@@ -243,7 +244,8 @@ void encodeRivers(const WorldData& world, v1::RiverPrimitives& out) {
 }
 
 void encodeHeader(const WorldData& world, v1::World& out) {
-  out.set_format_version(kWorldFormatVersion);
+  out.set_format_version(world.relief.empty() ? kWorldFormatVersionWithoutRelief
+                                              : kWorldFormatVersion);
   out.set_generator_version(world.generatorVersion);
   out.set_cache_key(world.cacheKey);
   out.set_name(world.name);
@@ -269,6 +271,8 @@ v1::World toProto(const WorldData& world) {
   encodeRivers(world, *message.mutable_rivers());
   if (!world.features.empty()) // absent otherwise: the same bytes as before features existed
     encodeFeatures(world.features, *message.mutable_features());
+  if (!world.relief.empty())
+    encodeRelief(world.relief, *message.mutable_relief());
   return message;
 }
 

@@ -68,11 +68,13 @@ base::Result<std::string_view> unframe(std::string_view bytes, std::string_view 
   if (bytes.substr(0, kMagic.size()) != kMagic)
     return corruptError(name, "not a strahler world file (wrong magic bytes)");
   const auto version = static_cast<std::uint32_t>(readLittleEndian(bytes, kMagic.size(), 4));
-  if (version != kWorldFormatVersion)
+  if (version != kWorldFormatVersion && version != kWorldFormatVersionWithoutRelief)
     return base::makeError(base::ErrorCode::kCorrupt,
                            "world file '" + std::string(name) + "' has format version " +
-                               std::to_string(version) + ", this strahler reads version " +
-                               std::to_string(kWorldFormatVersion));
+                               std::to_string(version) + ", this strahler reads versions " +
+                               std::to_string(kWorldFormatVersionWithoutRelief) + " and " +
+                               std::to_string(kWorldFormatVersion) +
+                               ": generate it again with 'strahler generate'");
   const std::uint64_t length = readLittleEndian(bytes, kMagic.size() + 4, 8);
   if (length != bytes.size() - overhead)
     return corruptError(name, "the header announces a payload of " + std::to_string(length) +
@@ -95,7 +97,8 @@ std::string encodeWorld(const construction::WorldData& world) {
   std::string payload;
   const bool serialized = message.SerializeToString(&payload);
   STRAHLER_ASSERT(serialized, "protobuf could not serialise a world (larger than 2 GiB?)");
-  return detail::frame(payload, kWorldFormatVersion);
+  return detail::frame(payload, world.relief.empty() ? kWorldFormatVersionWithoutRelief
+                                                     : kWorldFormatVersion);
 }
 
 base::Result<construction::WorldData> decodeWorld(std::string_view bytes,

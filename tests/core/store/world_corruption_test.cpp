@@ -113,7 +113,7 @@ TEST(WorldCorruption, OtherFormatVersionIsNamed) {
   const std::string future = detail::frame(payload, 7);
   EXPECT_TRUE(failsWith(decodeWorld(future, "old.world"), ErrorCode::kCorrupt,
                         "world file 'old.world' has format version 7, this strahler reads "
-                        "version 2"));
+                        "versions 2 and 3"));
 }
 
 TEST(WorldCorruption, GarbagePayloadWithAValidChecksumIsRefused) {

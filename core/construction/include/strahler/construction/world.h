@@ -19,6 +19,7 @@ namespace strahler::construction {
 
 namespace detail {
 class Folds;
+class ReliefField;
 class Tributaries;
 class WorldTributarySource;
 } // namespace detail
@@ -41,12 +42,14 @@ struct NoiseOctaves {
 
 /// A world ready to evaluate: the data plus the indexes that make h(p) local.
 /// h = C(B(T…), U(R…)) (Section 6) on land, shaped by CoastShape at the shore and below
-/// the sea. Evaluation is a pure, thread-safe function of (world, point, sample spacing).
+/// the sea, plus the erosion's residual (WorldData::relief, smoothly interpolated) off the
+/// rivers' floors. Evaluation is a pure, thread-safe function of (world, point, sample spacing).
 /// The terrain blend B(T…) = Σ w_i h_i(p) / Σ w_i + Σ_k A G^k octave_k(p), h_i the plane of
 /// primitive i (its elevation and slope), where the amplitude A
 /// and gain G are the w-weighted means of the primitives' amplitude and roughness, and octaves
-/// 2–6 are gullies running down the blend's gradient: one shared relief whose character
-/// follows the primitives (see docs/architecture.md). With drawn mountains
+/// 2–6 are gullies running down the blend's gradient (gradient noise on an eroded world, whose
+/// residual carries that drainage): one shared relief whose character follows the primitives
+/// (see docs/architecture.md). With drawn mountains
 /// (data().features.mountains) B(T…) also holds the tectonic folds (TectonicPlates), added
 /// before the rivers' union.
 class World {
@@ -224,6 +227,11 @@ private:
   void finishGroup(const geometry::Vec2* group, double spacing, const double* h, const double* w,
                    std::span<const RiverCandidate> rivers, const Shore& shore,
                    std::span<double> heights) const noexcept;
+  /// Adds the erosion's residual (data().relief, smoothly interpolated) to heights[l] at
+  /// group[l] for samples `spacing` apart, except on a river's floor (riverW[l] = 1), which
+  /// keeps its line and depth; nothing without a residual.
+  void addRelief(const geometry::Vec2* group, double spacing, const double* riverW,
+                 std::span<double> heights) const noexcept;
   /// Whether each of base::kLanes points `group` lies on land (1) or not (0): land().contains()
   /// in vector code where they share a ray band.
   void insideLand(const geometry::Vec2* group, double* onLand) const noexcept;
@@ -255,6 +263,7 @@ private:
   std::uint32_t gullySeed_ = 0;                            // shuffles the gully octaves' phases
   std::shared_ptr<const detail::Tributaries> tributaries_; // drainage below the graph's scale
   std::shared_ptr<const detail::Folds> folds_; // tectonic folds; null without drawn mountains
+  std::shared_ptr<const detail::ReliefField> relief_; // the erosion's residual; null: none
 };
 
 // The instruction set evaluation runs on lives in strahler/simd/instruction_set.h; these names

@@ -18,11 +18,15 @@ namespace strahler::construction {
 /// primitives, valleys that widen with their depth (fitted radii), λ 0.35, concavity 0.3.
 /// 7: rivers fade in from one sample spacing (primitives::riverFade); growth goes back to the
 /// land far from every river (the coverage gaps).
+/// Erosion at generation (issue 36) is opt-in through params (erosionSteps > 0, part of the
+/// canonical params and so of the cache key): worlds without it are generator 7's, unchanged.
 inline constexpr const char* kGeneratorVersion = "strahler-generator-7";
 
 /// Runs the whole generation of Sections 4–7 on `spec`: network, blocks and analysis
 /// (analysis::buildHydrology), then river and terrain primitives ("primitives"), quantised to
-/// the file's precision. `cacheKey` is recorded in the result. Stages are timed into `timer`.
+/// the file's precision, then, where params.erosionSteps > 0, erosion at generation (the
+/// residual in WorldData::relief). `cacheKey` is recorded in the result. Stages are timed into
+/// `timer`.
 base::Result<WorldData> generateWorldData(const input::WorldSpec& spec, std::string cacheKey,
                                           const base::ProgressCallback& progress = {},
                                           base::StageTimer* timer = nullptr);

@@ -127,6 +127,15 @@ struct Params {
   /// Costly: a tile takes about 13 times the CPU (docs/performance.md).
   int tributaryLevels = 0;
 
+  // --- Erosion at generation (issue 36; docs/architecture.md, "Erosion at generation") ---
+  // Experimental and opt-in: the erosion keys are left out of the canonical JSON while
+  // erosionSteps is 0, so worlds without it keep their cache keys.
+  double erosionCell = 60.0; ///< Lattice spacing of the erosion, m, in [30, 120].
+  int erosionSteps = 0;      ///< Steps of the landscape evolution, in [0, 200]; 0: none; 20 tested.
+  double erosionStrength = 1.0;      ///< Multiplier of the stream-power incision, in [0, 5].
+  double hillslopeDiffusivity = 1.0; ///< Multiplier of the hillslope transport, in [0, 5].
+  double erosionGrain = 1.0;         ///< Multiplier of the grain left after it, in [0, 5].
+
   // --- Vegetation layer (issue 28) ---
   /// The vegetation layer's response curves by species, replacing core/layers' defaults
   /// (layers::kSpecies) for the species named; empty: the defaults. JSON: "vegetation":

@@ -22,8 +22,12 @@ namespace strahler::store {
 // Every value is stored as an integer number of its quantum (primitives::Quantum), delta-coded
 // in packed columns, so a world costs a few hundred bytes per km² and reads back bit for bit.
 
-/// Version of the file layout and payload schema this strahler writes and reads.
-inline constexpr std::uint32_t kWorldFormatVersion = 2;
+/// Version of the file layout and payload schema this strahler writes for a world with an
+/// erosion residual (WorldData::relief); it reads it and kWorldFormatVersionWithoutRelief.
+inline constexpr std::uint32_t kWorldFormatVersion = 3;
+/// Version written for a world without a residual: the bytes of the strahler before erosion
+/// at generation, which older readers still read.
+inline constexpr std::uint32_t kWorldFormatVersionWithoutRelief = 2;
 /// Bytes before the payload: magic, version, payload length.
 inline constexpr std::size_t kWorldHeaderBytes = 26;
 /// Bytes after the payload: the CRC-32.
