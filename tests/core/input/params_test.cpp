@@ -109,6 +109,13 @@ TEST(Params, EveryRangeIsEnforced) {
       {R"({"tributaryLevels": 4})", ErrorCode::kOutOfRange,
        "'tributaryLevels' = 4 is outside [0, 3]"},
       {R"({"tributaryLevels": -1})", ErrorCode::kOutOfRange, "'tributaryLevels' = -1"},
+      {R"({"erosionCell": 20})", ErrorCode::kOutOfRange,
+       "'erosionCell' = 20 m is outside [30, 120] m"},
+      {R"({"erosionSteps": 201})", ErrorCode::kOutOfRange, "'erosionSteps' = 201"},
+      {R"({"erosionSteps": 2.5})", ErrorCode::kInvalidInput, "'erosionSteps'"},
+      {R"({"erosionStrength": -1})", ErrorCode::kOutOfRange, "'erosionStrength' = -1"},
+      {R"({"hillslopeDiffusivity": 6})", ErrorCode::kOutOfRange, "'hillslopeDiffusivity' = 6"},
+      {R"({"erosionGrain": 9})", ErrorCode::kOutOfRange, "'erosionGrain' = 9"},
       {R"({"slopeMin": 0.1, "slopeMax": 0.05})", ErrorCode::kInvalidInput,
        "'slopeMin' = 0.1 must not exceed 'slopeMax' = 0.05"},
       {R"({"slopeMax": 0.7})", ErrorCode::kInvalidInput, "'slopeMax' = 0.7 must be less than"},
@@ -249,6 +256,23 @@ TEST(Params, CanonicalJsonHasAFixedKeyOrder) {
   EXPECT_NE(text.find(R"("deltaMinFlow":6,"seed":1,"constraints":[]})"), std::string::npos) << text;
   EXPECT_EQ(text.find(' '), std::string::npos);
   EXPECT_EQ(strahler::test_support::valueOf(parseParams(text)), Params{});
+}
+
+TEST(Params, ErosionKeysAreInTheCanonicalJsonOnlyWithErosion) {
+  // Worlds without erosion keep their canonical text (and cache keys).
+  Params p;
+  p.erosionStrength = 2.0; // ignored while erosionSteps is 0
+  EXPECT_EQ(canonicalJson(p).find("erosion"), std::string::npos);
+  EXPECT_EQ(canonicalJson(p).find("hillslopeDiffusivity"), std::string::npos);
+  p.erosionSteps = 20;
+  const std::string text = canonicalJson(p);
+  EXPECT_NE(text.find(R"("erosionCell":60,"erosionSteps":20,"erosionStrength":2,)"
+                      R"("hillslopeDiffusivity":1,"erosionGrain":1,"seed":1)"),
+            std::string::npos)
+      << text;
+  auto parsed = parseParams(text);
+  ASSERT_TRUE(parsed.ok()) << parsed.error().message;
+  EXPECT_EQ(parsed.value(), p);
 }
 
 TEST(Params, TributaryLevelsAreInTheCanonicalJsonOnlyWhenSet) {

@@ -28,6 +28,24 @@ TEST(GeneratedWorld, FitsTheSizeBudget) {
   EXPECT_GT(double(world.terrain.size()) / world.areaKm2(), 7.0);
 }
 
+TEST(GeneratedWorld, AnErodedWorldFitsThePapersBudgetAndRoundTrips) {
+  input::WorldSpec spec = test_support::defaultIslandSpec();
+  spec.params.erosionSteps = 20;
+  const construction::WorldData world = test_support::valueOf(
+      construction::generateWorldData(spec, cacheKey(spec, construction::kGeneratorVersion)));
+  ASSERT_FALSE(world.relief.empty());
+  const std::string bytes = encodeWorld(world);
+  EXPECT_LE(double(bytes.size()) / world.areaKm2(), 1500.0); // the paper's 1.5 KB per km²
+  STRAHLER_ASSIGN_OR_ASSERT(auto decoded, decodeWorld(bytes, "eroded"));
+  const construction::WorldData& back = decoded;
+  EXPECT_EQ(back.relief, world.relief);
+  const construction::World a(world), b(back);
+  for (int i = 0; i < 200; ++i) {
+    const geometry::Vec2 p{-20000.0 + 211.0 * i, -8000.0 + 77.0 * i};
+    ASSERT_EQ(a.height(p, 30.0), b.height(p, 30.0));
+  }
+}
+
 TEST(GeneratedWorld, RoundTripsExactly) {
   const construction::WorldData& world = generatedIsland();
   const std::string bytes = encodeWorld(world);
