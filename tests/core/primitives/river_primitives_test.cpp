@@ -88,7 +88,7 @@ std::vector<double> sinuosities(const WorldData& world, RiverType type, double m
 }
 
 TEST(RiverPrimitives, SinuosityFollowsTheRosgenType) {
-  for (const WorldData* world : {&defaultIsland(), &dlaIsland()}) {
+  for (const WorldData* world : {&defaultIsland(), &dlaIsland(), &mallorca()}) {
     // Sections long enough for a few 200 m waves.
     const std::vector<double> e = sinuosities(*world, RiverType::kSinuous, 600.0);
     const std::vector<double> b = sinuosities(*world, RiverType::kStraight, 600.0);
