@@ -3,10 +3,12 @@
 #include "strahler/base/random.h"
 #include "strahler/geometry/distance.h"
 #include "strahler/network/drawn_rivers.h"
+#include "strahler/primitives/meander_curve.h"
 #include "strahler/primitives/quantization.h"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -49,68 +51,111 @@ Vec2 rotate(Vec2 v, double angle) {
   return {c * v.x - s * v.y, s * v.x + c * v.y};
 }
 
-/// Control polygon of the section from `node` down to its parent (Section 7.1 junctions).
-std::vector<Vec2> controlPolygon(const input::Params& params, const network::RiverNetwork& net,
-                                 const analysis::NetworkAnalysis& a, network::NodeId id) {
+/// The unit direction of the river through `id` toward its parent, the tangent every curve at
+/// the node shares with it: the centripetal Catmull-Rom tangent through the main inflow, the
+/// node and its parent (so a chain of edges, as the DLA grower's, runs through its nodes as one
+/// smooth spline); the edge's chord at a source; the main inflow's chord at a confluence and at
+/// a mouth.
+Vec2 throughTangent(const network::RiverNetwork& net, const analysis::NetworkAnalysis& a,
+                    network::NodeId id) {
   const network::RiverNode& node = net.node(id);
-  const Vec2 c = node.position;
-  const Vec2 n = net.node(node.parent).position;
-  const double length = distance(c, n);
-  std::vector<Vec2> points{c};
-  // Leave the upstream node in the direction the main inflow arrives with.
-  if (const network::NodeId up = mainInflow(net, a, id); up.valid()) {
-    const Vec2 arriving = normalize(c - net.node(up).position);
-    points.push_back(c + arriving * (0.25 * std::min(params.edgeLength, length)));
-  }
-  // Tributaries bend to meet the main stem: 90° across Strahler orders, 45° within one.
+  const network::NodeId up = mainInflow(net, a, id);
+  const Vec2 p1 = node.position;
+  if (!node.parent.valid())
+    return up.valid() ? normalize(p1 - net.node(up).position) : Vec2{1.0, 0.0};
+  const Vec2 p2 = net.node(node.parent).position;
+  if (!up.valid())
+    return normalize(p2 - p1);
+  const Vec2 p0 = net.node(up).position;
+  // At a confluence the main stem keeps its arriving chord, so the tributary's bend to meet it
+  // (arrivalTangent) is measured from where the main stem really comes from.
+  if (node.children.size() > 1)
+    return normalize(p1 - p0);
+  const double d01 = std::sqrt(distance(p0, p1)), d12 = std::sqrt(distance(p1, p2));
+  const Vec2 m = (p1 - p0) / d01 - (p2 - p0) / (d01 + d12) + (p2 - p1) / d12;
+  return lengthSquared(m) > 1e-18 ? normalize(m) : normalize(p2 - p1);
+}
+
+/// The direction the section from `id` arrives at its parent with (Section 7.1 junctions): the
+/// parent's through tangent when it is the main inflow; otherwise the tributary bends to meet
+/// the main stem there at 90° across Strahler orders and at 45° within one.
+Vec2 arrivalTangent(const network::RiverNetwork& net, const analysis::NetworkAnalysis& a,
+                    network::NodeId id) {
+  const network::RiverNode& node = net.node(id);
+  const Vec2 stem = throughTangent(net, a, node.parent);
   const network::NodeId main = mainInflow(net, a, node.parent);
-  if (main.valid() && main != id) {
-    const Vec2 stem = normalize(n - net.node(main).position);
-    const double side = cross(stem, c - n) >= 0.0 ? 1.0 : -1.0;
-    const bool sameOrder = net.node(main).strahler == node.strahler;
-    const Vec2 arrival = rotate(stem, -side * (sameOrder ? kPi / 4.0 : kPi / 2.0));
-    points.push_back(n - arrival * (0.35 * std::min(params.edgeLength, length)));
-  }
-  points.push_back(n);
-  return points;
+  if (!main.valid() || main == id)
+    return stem;
+  const double side =
+      cross(stem, node.position - net.node(node.parent).position) >= 0.0 ? 1.0 : -1.0;
+  const bool sameOrder = net.node(main).strahler == node.strahler;
+  return rotate(stem, -side * (sameOrder ? kPi / 4.0 : kPi / 2.0));
 }
 
-/// Chaikin corner cutting with fixed end points.
-std::vector<Vec2> smooth(std::vector<Vec2> points, int iterations) {
-  for (int it = 0; it < iterations && points.size() > 2; ++it) {
-    std::vector<Vec2> out{points.front()};
-    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
-      const Vec2 a = points[i], b = points[i + 1];
-      if (i > 0)
-        out.push_back(lerp(a, b, 0.25));
-      if (i + 2 < points.size())
-        out.push_back(lerp(a, b, 0.75));
-    }
-    out.push_back(points.back());
-    points = std::move(out);
+/// The side a section's meander belt keeps to near a confluence, +1 left, −1 right, 0 either:
+/// a tributary's away from the main stem above the junction, the main stem's away from the
+/// tributary, above the junction and below it, so that channels of different water levels do
+/// not touch (two sibling channels 3 m apart read as a 2.7 m rise downstream).
+double beltSide(const network::RiverNetwork& net, const analysis::NetworkAnalysis& a,
+                network::NodeId id) {
+  const network::RiverNode& node = net.node(id);
+  const auto sideOf = [&](network::NodeId confluence, network::NodeId except) {
+    const Vec2 stem = throughTangent(net, a, confluence);
+    const Vec2 at = net.node(confluence).position;
+    for (network::NodeId c : net.node(confluence).children)
+      if (c != except)
+        return cross(stem, net.node(c).position - at) >= 0.0 ? 1.0 : -1.0;
+    return 0.0;
+  };
+  if (net.node(node.parent).children.size() > 1) {
+    const network::NodeId main = mainInflow(net, a, node.parent);
+    if (main != id)
+      return sideOf(node.parent, main);
+    return -sideOf(node.parent, id);
   }
-  return points;
+  if (node.children.size() > 1)
+    return -sideOf(id, mainInflow(net, a, id));
+  return 0.0;
 }
 
-/// Arc-length resampling at `count` + 1 uniformly spaced points.
-std::vector<Vec2> resample(const std::vector<Vec2>& points, std::size_t count) {
-  std::vector<double> cumulative{0.0};
-  for (std::size_t i = 1; i < points.size(); ++i)
-    cumulative.push_back(cumulative.back() + distance(points[i - 1], points[i]));
-  const double total = cumulative.back();
-  std::vector<Vec2> out;
-  std::size_t seg = 0;
-  for (std::size_t k = 0; k <= count; ++k) {
-    const double s = total * static_cast<double>(k) / static_cast<double>(count);
-    while (seg + 2 < cumulative.size() && cumulative[seg + 1] < s)
-      ++seg;
-    const double span = cumulative[seg + 1] - cumulative[seg];
-    out.push_back(lerp(points[seg], points[seg + 1], span > 0 ? (s - cumulative[seg]) / span : 0));
+/// The whole sine-generated waves (MeanderWave) of a section of this type and mean channel
+/// width along a valley `valleyLength` long, their belt on `side` (beltSide; 0: at random):
+/// wavelengths of 10–14 channel widths down the valley (Langbein & Leopold 1966), at least
+/// kMinMeanderWavelength; largest deflections ω of 1.3–1.6 rad for E (sinuosity 1.6–2.2) and
+/// 0.1–0.25 rad for B (nearly straight), each wave's varied a little; the two waves nearest an
+/// end at a confluence calmed (×0.5, ×0.85), so that the bends there keep clear of the other
+/// river. None for deltas, or where no whole wave fits.
+std::vector<MeanderWave> meanderWaves(RiverType type, double width, double valleyLength,
+                                      double side, bool calmStart, bool calmEnd, base::Rng& rng) {
+  const double wavelength = std::max(rng.uniform(10.0, 14.0) * width, kMinMeanderWavelength);
+  const double drawnSide = rng.chance(0.5) ? 1.0 : -1.0;
+  const double sign = side != 0.0 ? side : drawnSide;
+  double omega = 0.0;
+  if (type == RiverType::kSinuous)
+    omega = rng.uniform(1.3, 1.6);
+  else if (type == RiverType::kStraight)
+    omega = rng.uniform(0.1, 0.25);
+  const auto count = static_cast<std::size_t>(std::floor(valleyLength / wavelength + 0.5));
+  std::vector<MeanderWave> waves;
+  if (omega == 0.0 || count == 0)
+    return waves;
+  constexpr double kCalm[] = {0.5, 0.85};
+  for (std::size_t i = 0; i < count; ++i) {
+    MeanderWave w;
+    w.omega = sign * omega * rng.uniform(0.92, 1.06);
+    if (calmStart && i < 2)
+      w.omega *= kCalm[i];
+    if (calmEnd && count - 1 - i < 2)
+      w.omega *= kCalm[count - 1 - i];
+    w.flattening = rng.uniform(0.0, 0.03);
+    w.length = rng.uniform(0.8, 1.2) * meanderSinuosity(w);
+    waves.push_back(w);
   }
-  out.back() = points.back();
-  return out;
+  return waves;
 }
 
+/// A sideways sine offset (perturb): the braided channels' jitter and the wandering under the
+/// tributaries.
 struct Meander {
   double amplitude = 0.0;
   double wavelength = 1.0;
@@ -118,47 +163,40 @@ struct Meander {
   double secondAmplitude = 0.0; // braided channels wander at two scales
 };
 
-Meander meanderFor(RiverType type, double width, base::Rng& rng) {
+/// The jitter of a braided (D) channel of this width.
+Meander braidedJitter(double width, base::Rng& rng) {
   Meander m;
   m.wavelength = std::max(11.0 * width, kMinMeanderWavelength) * rng.uniform(0.85, 1.15);
   m.phase = rng.uniform(0.0, 2.0 * kPi);
-  switch (type) {
-  case RiverType::kSinuous:
-    m.amplitude = 0.22 * m.wavelength * rng.uniform(0.7, 1.0);
-    break;
-  case RiverType::kStraight:
-    m.amplitude = 0.03 * m.wavelength;
-    break;
-  case RiverType::kBraided:
-    m.amplitude = 0.06 * m.wavelength;
-    m.secondAmplitude = 0.03 * m.wavelength;
-    break;
-  case RiverType::kDelta:
-    break;
-  }
+  m.amplitude = 0.06 * m.wavelength;
+  m.secondAmplitude = 0.03 * m.wavelength;
   return m;
 }
 
-/// Offsets the points sideways by the meander, fading to zero at both ends (over `ramp`
-/// wavelengths, at most half the section) so that sections still meet exactly at the nodes.
+/// The sideways offset of `m` at arc length s of a curve `total` long, fading to zero at both
+/// ends (over `ramp` wavelengths, at most half the curve; smoothstep, so flat there too).
+double offsetAt(const Meander& m, double s, double total, double ramp) {
+  const double fadeLength = std::min(ramp * m.wavelength, 0.5 * total);
+  const double fade = std::clamp(std::min(s, total - s) / fadeLength, 0.0, 1.0);
+  const double t = 2.0 * kPi * s / m.wavelength + m.phase;
+  const double offset = m.amplitude * std::sin(t) + m.secondAmplitude * std::sin(2.7 * t + 1.3);
+  return offset * fade * fade * (3.0 - 2.0 * fade);
+}
+
+/// Offsets the points sideways by the meander (offsetAt), so that sections still meet exactly
+/// at the nodes.
 void perturb(std::vector<Vec2>& points, const Meander& m, double ramp = 0.5) {
   if (m.amplitude == 0.0 || points.size() < 3)
     return;
   std::vector<double> s{0.0};
   for (std::size_t i = 1; i < points.size(); ++i)
     s.push_back(s.back() + distance(points[i - 1], points[i]));
-  const double total = s.back();
-  const double fadeLength = std::min(ramp * m.wavelength, 0.5 * total);
   std::vector<Vec2> out = points;
   for (std::size_t i = 1; i + 1 < points.size(); ++i) {
     const Vec2 tangent = points[i + 1] - points[i - 1];
     if (lengthSquared(tangent) == 0.0)
       continue;
-    const Vec2 normal = perpendicular(normalize(tangent));
-    const double fade = std::min({1.0, s[i] / fadeLength, (total - s[i]) / fadeLength});
-    const double t = 2.0 * kPi * s[i] / m.wavelength + m.phase;
-    const double offset = m.amplitude * std::sin(t) + m.secondAmplitude * std::sin(2.7 * t + 1.3);
-    out[i] = points[i] + normal * (offset * fade * fade * (3.0 - 2.0 * fade));
+    out[i] = points[i] + perpendicular(normalize(tangent)) * offsetAt(m, s[i], s.back(), ramp);
   }
   points = std::move(out);
 }
@@ -178,6 +216,86 @@ void keepClearOfShore(std::vector<Vec2>& points, Vec2 a, Vec2 b, const geometry:
     if (land.distanceToBoundary(points[i], needed) < needed)
       points[i] = q;
   }
+}
+
+/// Whether every inner point of `points` keeps the clearance keepClearOfShore asks for.
+bool clearOfShore(const std::vector<Vec2>& points, Vec2 a, Vec2 b,
+                  const geometry::PolygonIndex& land, double clearance) {
+  for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+    const Vec2 q = geometry::closestPointOnSegment(points[i], a, b);
+    const double needed = std::min(clearance, land.distanceToBoundary(q, clearance));
+    if (land.distanceToBoundary(points[i], needed) < needed)
+      return false;
+  }
+  return true;
+}
+
+/// How a section's meander belt was sided (beltSide) and calmed (meanderWaves), for fitCurve.
+struct SideRule {
+  bool kept = false;      ///< The belt was put on the side away from another river.
+  bool calmStart = false; ///< The section starts at a confluence.
+  bool calmEnd = false;   ///< The section ends at a confluence or a mouth.
+};
+
+/// Extra calming of the wave next to a confluence when fitCurve mirrors a kept belt: mirrored
+/// toward a sibling channel at a mouth, a bend ran 2 m from it and read as a 0.5 m rise.
+constexpr double kMirroredCalm = 0.3;
+
+/// Most turn between consecutive points of a fitted curve (fitCurve), radians: the curves are
+/// cut at 20° (CurveSampling), so more means the valley's bend folded the meander over itself.
+constexpr double kMostTurn = 28.0 * kPi / 180.0;
+
+/// Whether `points` turn by at most kMostTurn from one segment to the next, and keep clear of
+/// the shore as keepClearOfShore asks.
+bool fits(const std::vector<Vec2>& points, Vec2 a, Vec2 b, const geometry::PolygonIndex& land,
+          double clearance) {
+  for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+    const Vec2 in = points[i] - points[i - 1], out = points[i + 1] - points[i];
+    if (std::abs(std::atan2(cross(in, out), dot(in, out))) > kMostTurn)
+      return false;
+  }
+  return clearOfShore(points, a, b, land, clearance);
+}
+
+/// The curve of `waves` along `valley` (from a to b) where it fits (bends smoothly, keeps clear
+/// of the shore), or else the first that fits of: the waves mirrored to the valley's other
+/// side (a belt on the inside of a tight valley bend folds), then both sides with half and a
+/// quarter of the deflection (where `side` kept the belt away from the other river at a
+/// confluence, the mirrored wave next to that confluence calmed to kMirroredCalm more), the valley
+/// path alone, with arms of half and a quarter of their length (nearer the chord, still leaving and
+/// arriving along the nodes' tangents), and last the straight chord (without `shift`, the
+/// wandering). Pulling single points back toward the chord instead made corners of up to 54°.
+std::vector<Vec2> fitCurve(const ValleyPath& valley, std::vector<MeanderWave> waves, Vec2 a, Vec2 b,
+                           const geometry::PolygonIndex& land, double clearance,
+                           const std::function<double(double)>& shift, SideRule side) {
+  std::vector<Vec2> points = meanderCurve(valley, waves, {}, shift);
+  if (fits(points, a, b, land, clearance))
+    return points;
+  bool mirrored = false;
+  for (const double scale : {-1.0, -0.5, -1.0, -0.5, -1.0}) {
+    if (waves.empty())
+      break;
+    for (MeanderWave& w : waves)
+      w.omega *= scale;
+    if (!mirrored && side.kept) {
+      // Mirrored toward the other river: the wave at the confluence nearly straight.
+      if (side.calmStart)
+        waves.front().omega *= kMirroredCalm;
+      if (side.calmEnd)
+        waves.back().omega *= kMirroredCalm;
+    }
+    mirrored = true;
+    points = meanderCurve(valley, waves, {}, shift);
+    if (fits(points, a, b, land, clearance))
+      return points;
+  }
+  for (const double arm : {1.0, 0.5, 0.25}) {
+    points = meanderCurve(valley.withArms(arm), {}, {}, shift);
+    if (fits(points, a, b, land, clearance))
+      return points;
+  }
+  const Vec2 chord = normalize(b - a);
+  return meanderCurve(ValleyPath(a, chord, b, chord), {}, {});
 }
 
 /// A section's type, widths, depths and radius from the flows at its two ends.
@@ -219,30 +337,50 @@ RiverPrimitive buildSection(const input::Params& params, const network::RiverNet
   RiverPrimitive r = sectionHead(net, a, id);
 
   base::Rng rng(params.seed, base::mixHash(kRiverStream, id.value));
-  const Meander meander = meanderFor(r.type, r.widthUp, rng);
-  std::vector<Vec2> points = smooth(controlPolygon(params, net, a, id), 2);
-  const double step = std::min(50.0, meander.wavelength / 6.0);
-  double length = 0.0;
-  for (std::size_t i = 1; i < points.size(); ++i)
-    length += distance(points[i - 1], points[i]);
-  points = resample(points,
-                    std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(length / step))));
-  perturb(points, meander);
+  const network::RiverNode& parent = net.node(node.parent);
+  const ValleyPath valley(node.position, throughTangent(net, a, id), parent.position,
+                          arrivalTangent(net, a, id));
+  const double clearance = kShoreClearance * params.delta;
+  std::function<double(double)> shift;
+  Meander wander;
   if (params.tributaryLevels > 0) {
     // Under the tributaries, every river wanders at two scales, irregularly: a straight
-    // channel of constant width over a kilometre was the first thing reviewers saw.
+    // channel of constant width over a kilometre was the first thing reviewers saw. The
+    // valley wanders, and the meanders follow it.
     base::Rng wanderRng(params.seed, base::mixHash(kWanderStream, id.value));
-    Meander wander;
     wander.wavelength = wanderRng.uniform(450.0, 900.0);
     wander.amplitude = wander.wavelength * wanderRng.uniform(0.05, 0.11);
     wander.phase = wanderRng.uniform(0.0, 2.0 * kPi);
     wander.secondAmplitude = wander.wavelength * wanderRng.uniform(0.02, 0.05);
     // Faded over a whole wavelength: near a confluence a section runs inside its parent's
     // valley, and pushed across the parent's floor its bed would dip and rise again.
-    perturb(points, wander, 1.0);
+    shift = [&wander, total = valley.length()](double x) {
+      return offsetAt(wander, x, total, 1.0);
+    };
   }
-  keepClearOfShore(points, node.position, net.node(node.parent).position, land,
-                   kShoreClearance * params.delta);
+  std::vector<Vec2> points;
+  if (r.type == RiverType::kBraided) {
+    const Meander jitter = braidedJitter(r.widthUp, rng);
+    const double step = std::min(50.0, jitter.wavelength / 6.0);
+    const auto count =
+        std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(valley.length() / step)));
+    for (std::size_t k = 0; k <= count; ++k)
+      points.push_back(
+          valley.at(valley.length() * static_cast<double>(k) / static_cast<double>(count)));
+    perturb(points, jitter);
+    if (shift)
+      perturb(points, wander, 1.0);
+  } else {
+    const double side = beltSide(net, a, id);
+    const SideRule rule{side != 0.0, node.children.size() > 1,
+                        parent.children.size() > 1 || !parent.parent.valid()};
+    std::vector<MeanderWave> waves =
+        meanderWaves(r.type, 0.5 * (r.widthUp + r.widthDown), valley.length(), side, rule.calmStart,
+                     rule.calmEnd, rng);
+    points = fitCurve(valley, std::move(waves), node.position, parent.position, land, clearance,
+                      shift, rule);
+  }
+  keepClearOfShore(points, node.position, parent.position, land, clearance);
   setCurve(r, net, id, points);
   return r;
 }

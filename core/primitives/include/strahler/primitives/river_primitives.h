@@ -127,15 +127,21 @@ inline double riverWeight(double width, double radius, double d, double floor = 
 
 /// One river primitive per edge (node → parent), in node order (mouths have none), built
 /// as Section 7.1 describes: tributaries bend to meet the main stem at a node at a right
-/// angle when their Strahler numbers differ and at 45° when they are equal; curves are
-/// smoothed, subdivided below 50 m and perturbed by type (B nearly straight, E meanders of
-/// wavelength ~11 widths, D braided jitter, deltas straight); u_z falls linearly with arc
-/// length from the upstream node to the downstream node, and width and depth vary from the
+/// angle when their Strahler numbers differ and at 45° when they are equal. Each curve follows
+/// a smooth valley path (meander_curve.h: ValleyPath) whose tangent at a node is shared with the
+/// curves of the main stem through it (centripetal Catmull-Rom through the main inflow, the node
+/// and its parent), so chains of edges join without corners. Along it, E channels meander in
+/// whole sine-generated waves (Langbein & Leopold 1966; ω 1.3–1.6 rad, sinuosity 1.6–2.2,
+/// wavelengths 10–14 channel widths down the valley, at least 200 m), B channels barely
+/// (ω 0.1–0.25 rad), D channels get their braided jitter and deltas run along the path; points
+/// turn by at most ~20° from one to the next and lie at most 50 m apart. u_z falls linearly with
+/// arc length from the upstream node to the downstream node, and width and depth vary from the
 /// upstream node's flow to the downstream node's, so sections agree where they meet. Curve
-/// points keep half of δ from the shore of `land` (or as much as their straight edge does).
-/// The section between two consecutive chain nodes of a drawn river of `features` (recognised
-/// by their stored positions: network::drawnCourse's chain points, quantized) is the drawn
-/// line between them instead, every vertex kept, points at most 50 m apart, not perturbed.
+/// points keep half of δ from the shore of `land` (or as much as their straight edge does):
+/// bends that come nearer are tamed as a whole first. The section between two consecutive chain
+/// nodes of a drawn river of `features` (recognised by their stored positions:
+/// network::drawnCourse's chain points, quantized) is the drawn line between them instead, every
+/// vertex kept, points at most 50 m apart, not perturbed.
 std::vector<RiverPrimitive> generateRiverPrimitives(const input::Params& params,
                                                     const network::RiverNetwork& network,
                                                     const analysis::NetworkAnalysis& analysis,
