@@ -18,9 +18,10 @@ namespace strahler::construction {
 /// primitives, valleys that widen with their depth (fitted radii), λ 0.35, concavity 0.3.
 /// 7: rivers fade in from one sample spacing (primitives::riverFade); growth goes back to the
 /// land far from every river (the coverage gaps).
-/// Erosion at generation (issue 36) is opt-in through params (erosionSteps > 0, part of the
-/// canonical params and so of the cache key): worlds without it are generator 7's, unchanged.
-inline constexpr const char* kGeneratorVersion = "strahler-generator-7";
+/// 8: river curves are sine-generated meanders joined smoothly at the nodes (issue 36), and
+/// coastlines are canonical (either winding, any first vertex). Erosion at generation is opt-in
+/// through params (erosionSteps > 0, part of the canonical params and so of the cache key).
+inline constexpr const char* kGeneratorVersion = "strahler-generator-8";
 
 /// Runs the whole generation of Sections 4–7 on `spec`: network, blocks and analysis
 /// (analysis::buildHydrology), then river and terrain primitives ("primitives"), quantised to
