@@ -203,7 +203,7 @@ TEST(LayerTile, EachLayerHasItsDocumentedEncoding) {
   // renderer of its own) is sea floor, and along the rivers on land; dry on most land. Two
   // z14 tiles (rivers show where they are at least a pixel, 9 m, wide): one at a river mouth,
   // one inland.
-  const WaterCount mouth = countWater({14, 6953, 5969});
+  const WaterCount mouth = countWater({14, 6952, 5969});
   EXPECT_GT(mouth.sea, 1000) << "the tile holds sea";
   EXPECT_GE(mouth.seaWet, 0.98 * mouth.sea) << "the sea is water (up to the shore's pixels)";
   EXPECT_GT(mouth.land, 1000) << "the tile holds land";

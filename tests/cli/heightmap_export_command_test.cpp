@@ -1,7 +1,7 @@
 // `strahler export-heightmap` run as a user runs it: each engine's size, byte order and
 // orientation read back independently of the writer and checked against World::height,
 // Unreal's tiles sharing their edges, the same bytes for any thread count, and bad input
-// refused with exit 1 and nothing written.
+// refused with nothing written: exit 2 for a wrong command line, 1 for a wrong file.
 #include "engine_heightmap.h"
 #include "heightmap_export_support.h"
 #include "program_run.h"
@@ -235,8 +235,8 @@ TEST(ExportHeightmap, RefusesBadInputWithAPreciseMessageAndWritesNothing) {
   }
   EXPECT_TRUE(fs::is_empty(dir));
   // The command line itself, and the world file: each message names what is wrong (the option
-  // and the value given, or the file and its fault). An option the command does not know is a
-  // usage error (exit 2, as for every command); the rest exit 1.
+  // and the value given, or the file and its fault). A command line wrong in itself is a usage
+  // error (exit 2, as for every command, docs/cli.md); a missing or damaged file exits 1.
   const fs::path bad = outputDir("refused-worlds");
   const std::string bytes = readWholeFile(world);
   ASSERT_GT(bytes.size(), 1000u);
@@ -255,21 +255,21 @@ TEST(ExportHeightmap, RefusesBadInputWithAPreciseMessageAndWritesNothing) {
     int exitCode;
     std::string message, value;
   } commandLines[] = {
-      {world + " --engine raw --bbox -16,64,-15,65 --local 0,0,10,10" + out, 1, "--bbox",
+      {world + " --engine raw --bbox -16,64,-15,65 --local 0,0,10,10" + out, 2, "--bbox",
        "--local"},
-      {"--engine raw" + out, 1, "WORLD", ""},
-      {world + out, 1, "--engine", ""},
-      {world + " --engine raw", 1, "-o", ""},
-      {world + " --engine unreal --tiles 2" + out, 1, "--tiles", "2"},
-      {world + " --engine unreal --tiles 2x" + out, 1, "--tiles", "2x"},
-      {world + " --engine unreal --tiles 0x2" + out, 1, "--tiles", "0x2"},
-      {world + " --engine unreal --tiles 65x65" + out, 1, "--tiles", "65x65"},
-      {world + " --engine raw --size abc" + out, 1, "--size", "abc"},
-      {world + " --engine raw --size 1" + out, 1, "--size", "1"},
-      {world + " --engine raw --size 99999" + out, 1, "--size", "99999"},
-      {world + " --engine raw --threads x" + out, 1, "--threads", "x"},
-      {world + " --engine raw --threads 0" + out, 1, "--threads", "0"},
-      {world + " --engine raw --threads 100000" + out, 1, "--threads", "100000"},
+      {"--engine raw" + out, 2, "WORLD", ""},
+      {world + out, 2, "--engine", ""},
+      {world + " --engine raw", 2, "-o", ""},
+      {world + " --engine unreal --tiles 2" + out, 2, "--tiles", "2"},
+      {world + " --engine unreal --tiles 2x" + out, 2, "--tiles", "2x"},
+      {world + " --engine unreal --tiles 0x2" + out, 2, "--tiles", "0x2"},
+      {world + " --engine unreal --tiles 65x65" + out, 2, "--tiles", "65x65"},
+      {world + " --engine raw --size abc" + out, 2, "--size", "abc"},
+      {world + " --engine raw --size 1" + out, 2, "--size", "1"},
+      {world + " --engine raw --size 99999" + out, 2, "--size", "99999"},
+      {world + " --engine raw --threads x" + out, 2, "--threads", "x"},
+      {world + " --engine raw --threads 0" + out, 2, "--threads", "0"},
+      {world + " --engine raw --threads 100000" + out, 2, "--threads", "100000"},
       {world + " --engine raw --frobnicate" + out, 2, "--frobnicate", ""},
       {(bad / "missing.world").string() + " --engine raw" + out, 1, "missing.world", ""},
       {truncated.string() + " --engine raw" + out, 1, "truncated.world", "truncated"},

@@ -97,7 +97,8 @@ TEST(WorldCache, OtherFormatVersionIsDiscarded) {
   STRAHLER_ASSERT_OK(payload);
   STRAHLER_ASSERT_OK(cache.save(world));
   overwrite(cache.pathFor(world.cacheKey), detail::frame(payload.value(), 1));
-  expectDiscarded(cache, world.cacheKey, {"has format version 1, this strahler reads versions 2 and 3"});
+  expectDiscarded(cache, world.cacheKey,
+                  {"has format version 1, this strahler reads versions 2 and 3"});
 }
 
 TEST(WorldCache, FileHoldingAnotherKeyIsDiscarded) {

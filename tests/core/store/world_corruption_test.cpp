@@ -222,7 +222,7 @@ const std::vector<Inconsistency>& inconsistencies() {
       {"invalid params", [](v1::World& m) { m.set_params_json(R"({"kappa": -1})"); },
        "the stored params are invalid: "},
       {"payload version differs", [](v1::World& m) { m.set_format_version(1); },
-       "the payload says format version 1 but the header says 2"},
+       "the payload says format version 1, not 2 or 3"},
   };
   return cases;
 }
