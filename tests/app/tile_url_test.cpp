@@ -45,7 +45,7 @@ TEST(TileUrls, ATrailingSlashIsNotFoundNeverTheSameTile) {
   const std::string tile = "/worlds/island/tiles/10/433/373.png";
   const auto real = request(s.port(), tile);
   ASSERT_EQ(real.status, 200);
-  for (const std::string target :
+  for (const std::string& target :
        {tile + "/", tile + "/?size=256", std::string("/worlds/island/"),
         std::string("/worlds/island/cesium/layer.json/"), std::string("/health/")}) {
     const auto r = request(s.port(), target);
