@@ -25,12 +25,10 @@ constexpr std::size_t kTabled = 1 << 16;
 
 struct Neighbour {
   int dc, dr;
-  double distance; // in lattice spacings
 };
 /// The receivers' candidates: the four edge neighbours (a channel along a diagonal would be
 /// dammed between its nodes once the lattice is interpolated).
-constexpr std::array<Neighbour, 4> kNeighbours{
-    {{1, 0, 1.0}, {0, 1, 1.0}, {-1, 0, 1.0}, {0, -1, 1.0}}};
+constexpr std::array<Neighbour, 4> kNeighbours{{{1, 0}, {0, 1}, {-1, 0}, {0, -1}}};
 
 /// Uniform in [0, 1) from (seed, step, node).
 double draw(std::uint64_t seed, int step, std::size_t node) noexcept {
@@ -79,8 +77,6 @@ public:
       accumulateArea();
       incise();
       diffuse();
-      if (p_.fillEvery > 0 && (step + 1) % p_.fillEvery == 0 && step + 1 < p_.steps)
-        fillDepressions(z_, in_.roles, kFillGradient * p_.spacing);
       if (progress)
         progress("erosion", static_cast<double>(step + 1) / p_.steps);
     }
@@ -123,7 +119,7 @@ private:
         }
         if (drop <= 0.0)
           continue;
-        const double slope = drop / n.distance;
+        const double slope = drop; // per spacing: only the ratios matter
         const double wgt = p_.routingExponent == 1.0 ? slope : std::pow(slope, p_.routingExponent);
         weight[static_cast<std::size_t>(count)] = wgt;
         index[static_cast<std::size_t>(count)] = static_cast<std::uint32_t>(j);
@@ -216,7 +212,7 @@ private:
       if (fixed(i))
         continue;
       const std::uint32_t r = receiver_[i];
-      const double length = p_.spacing * distanceTo(i, r);
+      const double length = p_.spacing; // edge neighbours only
       const double base = z[r];
       if (z[i] <= base) { // a pit's receiver: only the uplift
         z[i] = (z[i] + pull * tree[i]) / (1.0 + pull);
@@ -235,12 +231,6 @@ private:
     for (const std::uint32_t i : free_) // cut off from every base level: uplift only
       if (scratch_[i] == 0.0)
         z[i] = (z[i] + pull * tree[i]) / (1.0 + pull);
-  }
-
-  double distanceTo(std::size_t i, std::size_t j) const noexcept {
-    const auto wi = static_cast<std::size_t>(w_);
-    const bool sameRow = i / wi == j / wi, sameColumn = i % wi == j % wi;
-    return (sameRow || sameColumn) ? 1.0 : 1.4142135623730951;
   }
 
   /// Nonlinear hillslope transport over the four edges of each node, explicit. Each free node

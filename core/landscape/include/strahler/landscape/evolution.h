@@ -20,9 +20,8 @@ struct EvolutionParams {
   double diffusivity = 0.1;     ///< D·dt / spacing² per step, times each node's diffusivity.
   double criticalSlope = 1.0;   ///< S_c of the nonlinear hillslope flux (Roering et al. 1999).
   double routingExponent = 1.0; ///< Receivers drawn with probability ∝ slope^this.
-  int fillEvery = 0; ///< Depressions are filled again every this many steps (0: at the end only).
-  std::uint64_t seed = 0; ///< Seeds the receivers' draws.
-  int threads = 0;        ///< Threads of the row-parallel stages; 0: the cores (at most 8).
+  std::uint64_t seed = 0;       ///< Seeds the receivers' draws.
+  int threads = 0;              ///< Threads of the row-parallel stages; 0: the cores (at most 8).
 };
 
 /// What the evolution starts from. Every grid has the same size.
