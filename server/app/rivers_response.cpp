@@ -1,6 +1,7 @@
 #include "rivers_response.h"
 
 #include "gzip.h"
+#include "tile_response.h"
 
 #include "strahler/geometry/projection.h"
 #include "strahler/render/rivers_geojson.h"
@@ -11,14 +12,15 @@
 namespace strahler::app {
 namespace {
 
-http::Response riversResponse(const RiversText& rivers, bool gzip) {
+http::Response riversResponse(const RiversText& rivers, const RiversRequest& request) {
   http::Response r;
   r.headers = {{"Content-Type", "application/geo+json"},
-               {"Cache-Control", "public, max-age=3600"},
+               {"ETag", request.etag},
+               {"Cache-Control", tileCacheControl(request.currentVersion)},
                {"Vary", "Accept-Encoding"}};
-  if (gzip)
+  if (request.gzip)
     r.headers.emplace_back("Content-Encoding", "gzip");
-  r.sharedBody = gzip ? rivers.gzip : rivers.plain;
+  r.sharedBody = request.gzip ? rivers.gzip : rivers.plain;
   r.route = "rivers";
   return r;
 }
@@ -27,9 +29,9 @@ http::Response riversResponse(const RiversText& rivers, bool gzip) {
 /// refused, or dropped unrun at shutdown) the client gets one answer: the GeoJSON or a 503.
 class RiversWaiter {
 public:
-  RiversWaiter(std::shared_future<RiversText> rivers, bool gzip,
+  RiversWaiter(std::shared_future<RiversText> rivers, RiversRequest request,
                std::function<void(http::Response)> done)
-      : rivers_(std::move(rivers)), gzip_(gzip), done_(std::move(done)) {}
+      : rivers_(std::move(rivers)), request_(std::move(request)), done_(std::move(done)) {}
   RiversWaiter(const RiversWaiter&) = delete;
   RiversWaiter& operator=(const RiversWaiter&) = delete;
   ~RiversWaiter() {
@@ -43,13 +45,13 @@ public:
 
   /// Waits for the GeoJSON and sends it.
   void answer() {
-    http::Response r = riversResponse(rivers_.get(), gzip_); // throws: the destructor's 503
+    http::Response r = riversResponse(rivers_.get(), request_); // throws: the destructor's 503
     std::exchange(done_, nullptr)(std::move(r));
   }
 
 private:
   std::shared_future<RiversText> rivers_;
-  bool gzip_ = false;
+  RiversRequest request_;
   std::function<void(http::Response)> done_;
 };
 
@@ -67,12 +69,12 @@ std::shared_future<RiversText> writeRiversAsync(const construction::WorldData& w
       .share();
 }
 
-void answerRivers(const std::shared_future<RiversText>& rivers, bool gzip,
+void answerRivers(const std::shared_future<RiversText>& rivers, const RiversRequest& request,
                   service::WorkerPool& pool, std::function<void(http::Response)> done) {
   if (rivers.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
-    return done(riversResponse(rivers.get(), gzip));
+    return done(riversResponse(rivers.get(), request));
   // Still being written: wait on a worker, not on this I/O thread.
-  auto waiter = std::make_shared<RiversWaiter>(rivers, gzip, std::move(done));
+  auto waiter = std::make_shared<RiversWaiter>(rivers, request, std::move(done));
   pool.submit([waiter] { waiter->answer(); }); // refused: the waiter answers 503
 }
 

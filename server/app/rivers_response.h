@@ -22,10 +22,18 @@ struct RiversText {
 /// world's takes seconds, which the server does not wait for. `world` must outlive the future.
 std::shared_future<RiversText> writeRiversAsync(const construction::WorldData& world);
 
-/// Answers GET rivers.geojson (route "rivers"), gzipped if `gzip`: at once when `rivers` is
+/// How one request for rivers.geojson is answered.
+struct RiversRequest {
+  bool gzip = false;           ///< The client accepts gzip.
+  std::string etag;            ///< The GeoJSON's ETag: a function of the world's content.
+  bool currentVersion = false; ///< The URL carried the world's current version (`v`).
+};
+
+/// Answers GET rivers.geojson (route "rivers"), gzipped if `request.gzip`, with its ETag and
+/// the tiles' Cache-Control (immutable for the current version only): at once when `rivers` is
 /// written, else from a worker of `pool` that waits for it (503 with Retry-After when the pool
 /// refuses or drops the wait), so that no I/O thread waits.
-void answerRivers(const std::shared_future<RiversText>& rivers, bool gzip,
+void answerRivers(const std::shared_future<RiversText>& rivers, const RiversRequest& request,
                   service::WorkerPool& pool, std::function<void(http::Response)> done);
 
 } // namespace strahler::app

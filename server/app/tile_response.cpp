@@ -16,10 +16,6 @@ constexpr const char* kTileCacheControl = "public, max-age=86400, immutable";
 /// ETag follows the content, so an old one is never answered 304).
 constexpr const char* kUnversionedTileCacheControl = "public, max-age=60, must-revalidate";
 
-const char* cacheControl(bool currentVersion) {
-  return currentVersion ? kTileCacheControl : kUnversionedTileCacheControl;
-}
-
 constexpr std::uint64_t kFnvOffset = 1469598103934665603ull;
 
 /// FNV-1a of `text`, continuing from `h` (so that hashing parts equals hashing their concat).
@@ -35,7 +31,7 @@ std::vector<std::pair<std::string, std::string>> tileHeaders(const service::Cach
   std::vector<std::pair<std::string, std::string>> headers = {
       {"Content-Type", t.mimeType},
       {"ETag", t.etag},
-      {"Cache-Control", cacheControl(currentVersion)},
+      {"Cache-Control", tileCacheControl(currentVersion)},
       {"Server-Timing",
        "eval;dur=" + std::to_string(t.evaluateMs) + ", encode;dur=" + std::to_string(t.encodeMs)}};
   if (!t.contentEncoding.empty())
@@ -62,6 +58,10 @@ int errorStatus(service::TileStatus status) {
 }
 
 } // namespace
+
+const char* tileCacheControl(bool currentVersion) {
+  return currentVersion ? kTileCacheControl : kUnversionedTileCacheControl;
+}
 
 std::string tileEtag(const std::string& worldVersion, const std::string& tileKey) {
   std::uint64_t h = fnv1a(tileKey, fnv1a("|", fnv1a(worldVersion)));
@@ -90,7 +90,7 @@ bool etagMatches(const std::string& ifNoneMatch, const std::string& etag) {
 http::Response notModified(const std::string& etag, const std::string& vary, bool currentVersion) {
   http::Response r;
   r.status = 304;
-  r.headers = {{"ETag", etag}, {"Cache-Control", cacheControl(currentVersion)}};
+  r.headers = {{"ETag", etag}, {"Cache-Control", tileCacheControl(currentVersion)}};
   if (!vary.empty())
     r.headers.emplace_back("Vary", vary);
   r.route = "tile";

@@ -15,6 +15,11 @@ namespace strahler::app {
 /// bytes, so a regenerated world's tiles never match an old ETag.
 std::string tileEtag(const std::string& worldVersion, const std::string& tileKey);
 
+/// The Cache-Control of a resource of one world's content (its tiles, its rivers):
+/// "public, max-age=86400, immutable" when the URL carried the world's current version, else
+/// "public, max-age=60, must-revalidate".
+const char* tileCacheControl(bool currentVersion);
+
 /// True when an If-None-Match value (a list, or "*") names `etag`.
 bool etagMatches(const std::string& ifNoneMatch, const std::string& etag);
 

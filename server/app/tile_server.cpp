@@ -201,9 +201,20 @@ void TileServer::handleWorld(const ServedWorld& w, Endpoint endpoint, const Pars
     return done(jsonResponse(w.metadata, "world"));
   case Endpoint::kTileJson:
     return done(tileJson(w, request));
-  case Endpoint::kRivers:
-    return answerRivers(w.rivers, acceptsGzip(request.header("accept-encoding")), pool_,
-                        std::move(done));
+  case Endpoint::kRivers: {
+    // Cached as the tiles are: immutable by the current version's URL only, and an ETag of
+    // the content (and encoding), so a regenerated world's rivers never answer an old one.
+    const auto v = target.query.find("v");
+    RiversRequest rivers{acceptsGzip(request.header("accept-encoding")), {},
+                         v != target.query.end() && v->second == w.version};
+    rivers.etag = tileEtag(w.version, rivers.gzip ? "rivers|gz" : "rivers|id");
+    if (etagMatches(request.header("if-none-match"), rivers.etag)) {
+      http::Response r = notModified(rivers.etag, "Accept-Encoding", rivers.currentVersion);
+      r.route = "rivers";
+      return done(std::move(r));
+    }
+    return answerRivers(w.rivers, rivers, pool_, std::move(done));
+  }
   case Endpoint::kFeatures: {
     http::Response r;
     r.headers = {{"Content-Type", "application/geo+json"}, {"Cache-Control", "no-cache"}};

@@ -1,6 +1,6 @@
 // The MapLibre style of one world, built from the server's own resources only (no base map,
 // no glyphs, no sprites), so the viewer works offline.
-import { worldUrl } from './api.js';
+import { tileUrl, worldUrl } from './api.js';
 import { FEATURES_SOURCE, featureStyle } from './features-overlay.js';
 import { VECTOR_SOURCE, contourStyle, defaultOverlayState, overlayStyle } from './layer-switcher.js';
 
@@ -76,7 +76,7 @@ export function worldStyle(world, exaggeration, showFeatures = false, overlays =
     sources: {
       [TERRAIN_SOURCE]: { ...dem },
       shade: { ...dem },
-      ...(vectorRivers ? {} : { rivers: { type: 'geojson', data: world.riversData ?? worldUrl(world, 'rivers.geojson') } }),
+      ...(vectorRivers ? {} : { rivers: { type: 'geojson', data: world.riversData ?? tileUrl(world, 'rivers.geojson') } }),
       ...(served ? { [VECTOR_SOURCE]: { type: 'vector', url: worldUrl(world, 'vector/tilejson.json') } } : {}),
       ...derived.sources,
       ...(features ? { [FEATURES_SOURCE]: features.source } : {}),

@@ -108,8 +108,8 @@ describe('map viewer', () => {
     const of = (pattern) => record.responses.filter((r) => pattern.test(r.url));
     assert.ok(of(/\/worlds$/).length === 1, 'GET /worlds');
     assert.ok(of(/\/tilejson\.json$/).length >= 1, 'GET tilejson.json');
-    assert.ok(of(/\/rivers\.geojson$/).length === 1, 'GET rivers.geojson');
-    assert.equal(of(/\/rivers\.geojson$/)[0].encoding, 'gzip', 'rivers.geojson comes gzipped');
+    assert.ok(of(/\/rivers\.geojson\?v=[0-9a-f]{16}$/).length === 1, 'GET rivers.geojson by the world version');
+    assert.equal(of(/\/rivers\.geojson\?v=/)[0].encoding, 'gzip', 'rivers.geojson comes gzipped');
     const tiles = of(/\/tiles\/\d+\/\d+\/\d+\.png(\?|$)/);
     assert.ok(tiles.length >= 1, 'no heightmap tile was requested');
     for (const tile of tiles) assert.match(tile.type, /^image\/png/, tile.url);
