@@ -205,7 +205,8 @@ void TileServer::handleWorld(const ServedWorld& w, Endpoint endpoint, const Pars
     // Cached as the tiles are: immutable by the current version's URL only, and an ETag of
     // the content (and encoding), so a regenerated world's rivers never answer an old one.
     const auto v = target.query.find("v");
-    RiversRequest rivers{acceptsGzip(request.header("accept-encoding")), {},
+    RiversRequest rivers{acceptsGzip(request.header("accept-encoding")),
+                         {},
                          v != target.query.end() && v->second == w.version};
     rivers.etag = tileEtag(w.version, rivers.gzip ? "rivers|gz" : "rivers|id");
     if (etagMatches(request.header("if-none-match"), rivers.etag)) {

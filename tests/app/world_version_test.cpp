@@ -1,8 +1,8 @@
 // Caches never serve a stale world: every tile URL the server hands out (TileJSON of terrain,
 // layers and vector tiles, Cesium's layer.json, the world document the pages build URLs from)
-// carries the world's content version, as the viewer's rivers.geojson URL does; only a URL with the current version is immutable, and
-// an ETag of another world's content is never answered 304. Over real sockets, with the world
-// regenerated under the same id between two runs of the server.
+// carries the world's content version, as the viewer's rivers.geojson URL does; only a URL with the
+// current version is immutable, and an ETag of another world's content is never answered 304. Over
+// real sockets, with the world regenerated under the same id between two runs of the server.
 #include "test_worlds.h"
 #include "tile_server_harness.h"
 
