@@ -2,10 +2,11 @@
 
 #include "hilbert_tile_id.h"
 
+#include "strahler/geometry/web_mercator.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <numbers>
 
 namespace strahler::app {
 namespace {
@@ -13,18 +14,14 @@ namespace {
 using base::ErrorCode;
 using base::makeError;
 
-/// Web Mercator's latitude limit, degrees.
-constexpr double kMaxLatitude = 85.0511287798066;
-
 /// Column coordinate of a longitude at zoom z, in tiles (fractional).
 double tileX(double lon, int z) {
-  return (lon + 180.0) / 360.0 * std::ldexp(1.0, z);
+  return geometry::webMercatorUnit({lon, 0.0}).x * std::ldexp(1.0, z);
 }
 
 /// Row coordinate of a latitude at zoom z, in tiles from the north (fractional).
 double tileY(double lat, int z) {
-  const double phi = std::clamp(lat, -kMaxLatitude, kMaxLatitude) * std::numbers::pi / 180.0;
-  return (1.0 - std::asinh(std::tan(phi)) / std::numbers::pi) / 2.0 * std::ldexp(1.0, z);
+  return geometry::webMercatorUnit({0.0, lat}).y * std::ldexp(1.0, z);
 }
 
 /// Tiles [first, last] covering [lo, hi) in tile coordinates: an edge exactly on a tile border

@@ -1,5 +1,6 @@
 #include "vector_layers.h"
 
+#include "strahler/geometry/web_mercator.h"
 #include "strahler/render/contours.h"
 #include "strahler/render/river_sections.h"
 
@@ -7,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <optional>
 
 namespace strahler::app {
@@ -28,7 +28,7 @@ MercatorLine mercatorLine(std::span<const Vec2> local,
   MercatorLine line;
   line.points.reserve(local.size());
   for (const Vec2 p : local)
-    line.points.push_back(mercatorOf(projection.inverse(p)));
+    line.points.push_back(geometry::webMercatorUnit(projection.inverse(p)));
   for (const Vec2 p : line.points)
     line.box.add(p);
   return line;
@@ -135,13 +135,6 @@ double round2(double v) {
 
 } // namespace
 
-Vec2 mercatorOf(Vec2 lonLat) noexcept {
-  constexpr double kMaxLat = 85.0511287798066;
-  const double lat = std::clamp(lonLat.y, -kMaxLat, kMaxLat) * std::numbers::pi / 180.0;
-  return {(lonLat.x + 180.0) / 360.0,
-          0.5 - std::log(std::tan(0.25 * std::numbers::pi + 0.5 * lat)) / (2.0 * std::numbers::pi)};
-}
-
 WorldVectors projectWorldVectors(const construction::WorldData& world,
                                  const geometry::LocalProjection& projection) {
   WorldVectors out;
@@ -246,11 +239,11 @@ Layer featuresLayer(const WorldVectors& world, const tiling::TileId& tile) {
   const auto lineOf = [&](const std::vector<Vec2>& lonLat) {
     std::vector<Vec2> line;
     for (const Vec2 p : lonLat)
-      line.push_back(frame.toTile(mercatorOf(p)));
+      line.push_back(frame.toTile(geometry::webMercatorUnit(p)));
     return line;
   };
   for (const input::MountainFeature& m : world.features->mountains) {
-    const Vec2 p = frame.toTile(mercatorOf(m.lonLat));
+    const Vec2 p = frame.toTile(geometry::webMercatorUnit(m.lonLat));
     if (!kBox.contains(p))
       continue;
     Feature f{GeometryType::kPoint,

@@ -62,9 +62,6 @@ struct WorldVectors {
 WorldVectors projectWorldVectors(const construction::WorldData& world,
                                  const geometry::LocalProjection& projection);
 
-/// Normalised Web Mercator of a longitude/latitude in degrees (latitude clamped to ±85.0511°).
-geometry::Vec2 mercatorOf(geometry::Vec2 lonLat) noexcept;
-
 /// The smallest Strahler order drawn at zoom `z`: 13 − z, at least 1, and at most the world's
 /// largest order (so its main rivers show at every zoom). Every order from zoom 12 on.
 int minRiverOrder(int z, int maxOrder) noexcept;

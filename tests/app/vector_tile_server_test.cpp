@@ -8,6 +8,7 @@
 #include "vector_layers.h"
 #include "vector_route.h"
 
+#include "strahler/geometry/web_mercator.h"
 #include "strahler/vector_tile/vector_tile.h"
 
 #include <gtest/gtest.h>
@@ -323,7 +324,7 @@ TEST(VectorLayers, OnlyTheOrdersVisibleAtTheZoomAreDrawn) {
     river.flow = river.width = 1.0;
     for (const double u : {0.1, 0.9}) {
       const geometry::Vec2 ll = lonLatIn(kCoast, u, 0.1 * order);
-      river.line.points.push_back(mercatorOf(ll));
+      river.line.points.push_back(geometry::webMercatorUnit(ll));
       river.line.box.add(river.line.points.back());
     }
     world.rivers.push_back(river);

@@ -1,5 +1,7 @@
 #include "strahler/tiling/tile_scheme.h"
 
+#include "strahler/geometry/web_mercator.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -168,7 +170,7 @@ SampleGrid TileScheme::webGrid(const TileId& tile, int n, int count, double firs
     const double row = northFirst ? static_cast<double>(tile.y) * n + j + first
                                   : static_cast<double>(tile.y + 1) * n + 1.0 - j;
     const double my = kWebExtent - row * step;
-    lats[static_cast<std::size_t>(j)] = std::atan(std::sinh(my / kWebMercatorRadius)) * kDeg;
+    lats[static_cast<std::size_t>(j)] = geometry::latitudeOfNorthing(my / kWebMercatorRadius);
   }
   SampleGrid g;
   g.width = g.height = count;

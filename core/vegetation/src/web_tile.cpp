@@ -1,35 +1,18 @@
 #include "strahler/vegetation/web_tile.h"
 
 #include "strahler/base/assert.h"
+#include "strahler/geometry/web_mercator.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
 
 namespace strahler::vegetation {
-namespace {
 
 using geometry::Vec2;
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
-
-/// EPSG:3857 in units of the world: (0, 0) north-west, (1, 1) south-east.
-Vec2 mercatorUnit(Vec2 lonLat) noexcept {
-  const double u = (lonLat.x + 180.0) / 360.0;
-  const double v = (1.0 - std::asinh(std::tan(lonLat.y / kDeg)) / std::numbers::pi) / 2.0;
-  return {u, v};
-}
-
-Vec2 lonLatOf(Vec2 unit) noexcept {
-  return {unit.x * 360.0 - 180.0,
-          std::atan(std::sinh(std::numbers::pi * (1.0 - 2.0 * unit.y))) * kDeg};
-}
-
-} // namespace
-
 Vec2 tileCoordinates(const WebTile& tile, Vec2 lonLat) noexcept {
-  const Vec2 m = mercatorUnit(lonLat);
+  const Vec2 m = geometry::webMercatorUnit(lonLat);
   // ldexp scales by 2^z exactly, so a point's tile at zoom z + 1 is a child of its tile at z.
   return {std::ldexp(m.x, tile.z) - static_cast<double>(tile.x),
           std::ldexp(m.y, tile.z) - static_cast<double>(tile.y)};
@@ -46,7 +29,7 @@ Footprint webTileFootprint(const geometry::LocalProjection& projection, const We
     for (Vec2 f : {Vec2{t, 0.0}, Vec2{t, 1.0}, Vec2{0.0, t}, Vec2{1.0, t}}) {
       const Vec2 unit{(static_cast<double>(tile.x) + f.x) / n,
                       (static_cast<double>(tile.y) + f.y) / n};
-      bounds.add(projection.forward(lonLatOf(unit)));
+      bounds.add(projection.forward(geometry::lonLatOfWebMercatorUnit(unit)));
     }
   }
   bounds = bounds.expanded(0.5 + 1e-3 * std::max(bounds.size().x, bounds.size().y));
