@@ -1,5 +1,7 @@
 #include "cesium_availability.h"
 
+#include "strahler/geometry/tile_id.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -40,14 +42,14 @@ bool CesiumAvailability::available(const tiling::TileId& tile) const {
   const std::optional<Range> r = level(tile.z);
   if (!r)
     return false;
-  const std::int64_t tmsRow = (std::int64_t{1} << tile.z) - 1 - tile.y;
+  const std::int64_t tmsRow = geometry::flipRow(tile.z, tile.y);
   return tile.x >= r->startX && tile.x <= r->endX && tmsRow >= r->startY && tmsRow <= r->endY;
 }
 
 std::string CesiumAvailability::metadataJson(const tiling::TileId& tile) const {
   if (tile.z % kMetadataLevels != 0)
     return {};
-  const std::int64_t tmsRow = (std::int64_t{1} << tile.z) - 1 - tile.y;
+  const std::int64_t tmsRow = geometry::flipRow(tile.z, tile.y);
   json levels = json::array();
   for (int k = 1; k <= kMetadataLevels && tile.z + k <= maxZoom_; ++k) {
     json ranges = json::array();

@@ -3,6 +3,8 @@
 #include "content_encoding.h"
 #include "route_parser.h"
 
+#include "strahler/geometry/tile_id.h"
+
 #include <algorithm>
 #include <cctype>
 #include <string>
@@ -101,15 +103,17 @@ base::Result<TileRequest> parseCesiumTerrainRoute(const std::string& world,
   request.scheme = tiling::SchemeKind::kGeographic;
   request.format = TileFormat::kQuantizedMesh;
   // TMS rows count from the south; a row outside the level stays outside after the flip, but
-  // is refused here, so that the message names the row the client asked for (404).
-  const std::int64_t rows = std::int64_t{1} << std::min(z.value(), kDeepestFlippable);
+  // is refused here, so that the message names the row the client asked for (404). A level
+  // deeper than kDeepestFlippable, refused later as outside the grid, flips as that one does.
+  const int level = static_cast<int>(std::min(z.value(), kDeepestFlippable));
+  const std::int64_t rows = std::int64_t{1} << level;
   if (y.value() >= rows)
     return base::makeError(base::ErrorCode::kNotFound,
                            "tile " + std::to_string(z.value()) + "/" + std::to_string(x.value()) +
                                "/" + std::to_string(y.value()) + " is outside the grid: level " +
                                std::to_string(z.value()) + " has TMS rows 0.." +
                                std::to_string(rows - 1));
-  request.tile = {static_cast<int>(z.value()), x.value(), rows - 1 - y.value()};
+  request.tile = {static_cast<int>(z.value()), x.value(), geometry::flipRow(level, y.value())};
   if (const auto e = query.find("extensions"); e != query.end()) {
     STRAHLER_ASSIGN_OR_RETURN(request.options.extensions, parseCesiumExtensions(e->second));
   } else {

@@ -7,6 +7,7 @@
 #include "world_summary.h"
 
 #include "strahler/construction/world.h"
+#include "strahler/geometry/tile_id.h"
 #include "strahler/image/image.h"
 #include "strahler/quality/analysis_report.h"
 #include "strahler/quality/dem_file.h"
@@ -223,7 +224,7 @@ base::Result<TileRequest> tileRequestOf(const CliArgs& args) {
                                         : tiling::SchemeKind::kWebMercator;
   request.tile = {static_cast<int>(z.value_or(0)), x.value_or(0), y.value_or(0)};
   if (request.scheme == tiling::SchemeKind::kGeographic) { // a TMS row, as in Cesium's URLs
-    request.tile.y = (std::int64_t{1} << request.tile.z) - 1 - request.tile.y;
+    request.tile.y = geometry::flipRow(request.tile.z, request.tile.y);
     request.options.extensions = kOctVertexNormals | kWaterMask | kMetadata;
   }
   request.options.size = static_cast<int>(size.value_or(0));

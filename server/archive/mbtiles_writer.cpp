@@ -1,5 +1,7 @@
 #include "mbtiles_writer.h"
 
+#include "strahler/geometry/tile_id.h"
+
 #include <cstdio>
 #include <sqlite3.h>
 
@@ -89,7 +91,7 @@ base::Status MbtilesWriter::addTile(TileCoord tile, std::string_view bytes) {
     ++stats_.uniqueTiles;
     stats_.tileBytes += bytes.size();
   }
-  const std::int64_t tmsRow = (std::int64_t{1} << tile.z) - 1 - tile.y;
+  const std::int64_t tmsRow = geometry::flipRow(tile.z, tile.y);
   sqlite3_reset(insertMap_);
   sqlite3_bind_int(insertMap_, 1, tile.z);
   sqlite3_bind_int64(insertMap_, 2, tile.x);

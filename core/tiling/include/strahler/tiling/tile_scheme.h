@@ -34,7 +34,7 @@ enum class SchemeKind {
   kWebMercator, ///< EPSG:3857 XYZ tiles, for web maps.
   kLocal,       ///< A metric quadtree over the world's bounding square, for game clients.
   /// EPSG:4326 tiles of 2 × 1 roots (Cesium's quantized-mesh pyramid); TileId rows still count
-  /// from the north (the TMS row of a URL is 2^z − 1 − y).
+  /// from the north (the TMS row of a URL is geometry::flipRow(z, y) = 2^z − 1 − y).
   kGeographic,
 };
 
