@@ -24,7 +24,7 @@ std::string lower(std::string_view s) {
 }
 
 /// The largest TMS zoom whose rows can be flipped without overflow.
-constexpr std::int64_t kDeepestFlippable = 40;
+constexpr int kDeepestFlippable = 40;
 
 } // namespace
 
@@ -88,16 +88,8 @@ base::Result<TileRequest> parseCesiumTerrainRoute(const std::string& world,
     if (name != "extensions" && name != "v")
       return badTerrain("unknown query parameter '" + name.substr(0, 64) +
                         "' (terrain tiles take only extensions and v)");
-  const std::string& last = s[5];
-  const std::string suffix = ".terrain";
-  if (last.size() <= suffix.size() ||
-      last.compare(last.size() - suffix.size(), suffix.size(), suffix) != 0)
-    return badTerrain("a Cesium terrain tile is named {y}.terrain");
-  auto z = parseDecimal(s[3], 2), x = parseDecimal(s[4], 10),
-       y = parseDecimal(last.substr(0, last.size() - suffix.size()), 10);
-  for (auto* v : {&z, &x, &y})
-    if (!*v)
-      return badTerrain("tile coordinate " + v->error().message);
+  STRAHLER_ASSIGN_OR_RETURN(const tiling::TileId tms,
+                            parseZxy(std::span(s).subspan(3), ".terrain", "a Cesium terrain tile"));
   TileRequest request;
   request.world = world;
   request.scheme = tiling::SchemeKind::kGeographic;
@@ -105,15 +97,15 @@ base::Result<TileRequest> parseCesiumTerrainRoute(const std::string& world,
   // TMS rows count from the south; a row outside the level stays outside after the flip, but
   // is refused here, so that the message names the row the client asked for (404). A level
   // deeper than kDeepestFlippable, refused later as outside the grid, flips as that one does.
-  const int level = static_cast<int>(std::min(z.value(), kDeepestFlippable));
+  const int level = std::min(tms.z, kDeepestFlippable);
   const std::int64_t rows = std::int64_t{1} << level;
-  if (y.value() >= rows)
+  if (tms.y >= rows)
     return base::makeError(base::ErrorCode::kNotFound,
-                           "tile " + std::to_string(z.value()) + "/" + std::to_string(x.value()) +
-                               "/" + std::to_string(y.value()) + " is outside the grid: level " +
-                               std::to_string(z.value()) + " has TMS rows 0.." +
+                           "tile " + std::to_string(tms.z) + "/" + std::to_string(tms.x) + "/" +
+                               std::to_string(tms.y) + " is outside the grid: level " +
+                               std::to_string(tms.z) + " has TMS rows 0.." +
                                std::to_string(rows - 1));
-  request.tile = {static_cast<int>(z.value()), x.value(), geometry::flipRow(level, y.value())};
+  request.tile = {tms.z, tms.x, geometry::flipRow(level, tms.y)};
   if (const auto e = query.find("extensions"); e != query.end()) {
     STRAHLER_ASSIGN_OR_RETURN(request.options.extensions, parseCesiumExtensions(e->second));
   } else {

@@ -99,16 +99,8 @@ base::Result<TileRequest> parseLayerRoute(const std::string& world,
     return badLayer("layer tiles are layers/{name}/{z}/{x}/{y}.png (Web Mercator) or "
                     "layers/{name}/local/{z}/{x}/{y}.png");
   const std::size_t at = local ? 5 : 4;
-  const std::string& last = s[at + 2];
-  const std::string suffix = ".png";
-  if (last.size() <= suffix.size() ||
-      last.compare(last.size() - suffix.size(), suffix.size(), suffix) != 0)
-    return badLayer("a layer tile is named {y}.png");
-  auto z = parseDecimal(s[at], 2), x = parseDecimal(s[at + 1], 10),
-       y = parseDecimal(last.substr(0, last.size() - suffix.size()), 10);
-  for (auto* v : {&z, &x, &y})
-    if (!*v)
-      return badLayer("tile coordinate " + v->error().message);
+  STRAHLER_ASSIGN_OR_RETURN(request.tile,
+                            parseZxy(std::span(s).subspan(at, 3), ".png", "a layer tile"));
   if (const auto q = query.find("size"); q != query.end()) {
     auto v = parseDecimal(q->second, 4);
     if (!v)
@@ -122,7 +114,6 @@ base::Result<TileRequest> parseLayerRoute(const std::string& world,
   request.world = world;
   request.format = TileFormat::kLayerPng;
   request.scheme = local ? tiling::SchemeKind::kLocal : tiling::SchemeKind::kWebMercator;
-  request.tile = {static_cast<int>(z.value()), x.value(), y.value()};
   return request;
 }
 

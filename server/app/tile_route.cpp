@@ -38,11 +38,8 @@ base::Result<TileRequest> parseTileRoute(const std::string& world,
   const std::size_t dot = last.find('.');
   if (dot == std::string::npos)
     return badTile("tile name must be {y}.{format}");
-  auto z = parseDecimal(s[3], 2), x = parseDecimal(s[4], 10),
-       y = parseDecimal(last.substr(0, dot), 10);
-  for (auto* v : {&z, &x, &y})
-    if (!*v)
-      return badTile("tile coordinate " + v->error().message);
+  STRAHLER_ASSIGN_OR_RETURN(const tiling::TileId tile,
+                            parseTileCoordinates(s[3], s[4], last.substr(0, dot)));
   std::string formatName = last.substr(dot + 1);
   if (const auto e = query.find("encoding"); e != query.end()) {
     if (formatName != "png" || (e->second != "terrarium" && e->second != "mapbox"))
@@ -65,7 +62,7 @@ base::Result<TileRequest> parseTileRoute(const std::string& world,
   STRAHLER_ASSIGN_OR_RETURN(request.options.size, tileSize(query, request.format));
   request.world = world;
   request.scheme = s[2] == "local" ? tiling::SchemeKind::kLocal : tiling::SchemeKind::kWebMercator;
-  request.tile = {static_cast<int>(z.value()), x.value(), y.value()};
+  request.tile = tile;
   return request;
 }
 

@@ -45,5 +45,25 @@ TEST(RouteParser, ParsesBoundedDecimals) {
   }
 }
 
+TEST(RouteParser, ReadsATilesZxyAndNamesWhatIsWrong) {
+  const std::vector<std::string> good{"12", "1736", "1494.mvt"};
+  EXPECT_EQ(test_support::valueOf(parseZxy(good, ".mvt", "a vector tile")),
+            (tiling::TileId{12, 1736, 1494}));
+  const auto refused = [](std::vector<std::string> zxy, const char* suffix) {
+    const auto t = parseZxy(zxy, suffix, "a vector tile");
+    EXPECT_FALSE(t.ok());
+    return t.ok() ? std::string() : t.error().message;
+  };
+  EXPECT_EQ(refused({"1", "0", "0.png"}, ".mvt"), "a vector tile is named {y}.mvt");
+  EXPECT_EQ(refused({"1", "0", ".mvt"}, ".mvt"), "a vector tile is named {y}.mvt");
+  EXPECT_EQ(refused({"100", "0", "0.mvt"}, ".mvt"),
+            "tile coordinate '100' is not a non-negative integer of at most 2 digits");
+  EXPECT_EQ(refused({"1", "x", "y.mvt"}, ".mvt"),
+            "tile coordinate 'x' is not a non-negative integer");
+  EXPECT_EQ(refused({"1", "0", "01.mvt"}, ".mvt"),
+            "tile coordinate '01' has a leading zero (write 1)");
+  EXPECT_EQ(test_support::valueOf(parseTileCoordinates("0", "0", "0")), (tiling::TileId{0, 0, 0}));
+}
+
 } // namespace
 } // namespace strahler::app

@@ -6,7 +6,7 @@
 #include "tile_request.h"
 #include "tile_server_harness.h"
 #include "vector_layers.h"
-#include "vector_route.h"
+#include "web_tile_route.h"
 
 #include "strahler/geometry/web_mercator.h"
 #include "strahler/vector_tile/vector_tile.h"

@@ -9,7 +9,7 @@
 #include "test_worlds.h"
 #include "tile_request.h"
 #include "tile_server_harness.h"
-#include "vegetation_route.h"
+#include "web_tile_route.h"
 
 #include "strahler/construction/world_builder.h"
 #include "strahler/tiling/tile_evaluator.h"

@@ -14,8 +14,7 @@
 #include "route_parser.h"
 #include "router.h"
 #include "tile_route.h"
-#include "vector_route.h"
-#include "vegetation_route.h"
+#include "web_tile_route.h"
 #include "wire_response.h"
 
 #include <boost/asio/buffer.hpp>
