@@ -2,6 +2,7 @@
 
 #include "parallel_chunks.h"
 
+#include "strahler/base/smoothstep.h"
 #include "strahler/encoding/grey_png.h"
 #include "strahler/geometry/projection.h"
 #include "strahler/layers/bordered_heights.h"
@@ -98,8 +99,7 @@ std::vector<SplatScores> scoreRows(const ScoringContext& context, const SplatGri
 SplatScores splatScores(double slopeDeg, double sedimentM, double vegetation, bool water) noexcept {
   if (water)
     return {0, 0, 0, 0, 1};
-  const double t = std::clamp((slopeDeg - kRockFromDeg) / (kRockFullDeg - kRockFromDeg), 0.0, 1.0);
-  const double rock = t * t * (3 - 2 * t);
+  const double rock = base::smoothstep((slopeDeg - kRockFromDeg) / (kRockFullDeg - kRockFromDeg));
   const double sediment = std::clamp(sedimentM / kSedimentFullM, 0.0, 1.0) * (1 - rock);
   const double plants = std::clamp(vegetation, 0.0, 1.0) * (1 - rock);
   const double ground = std::max(0.0, 1 - rock - std::max(sediment, plants));

@@ -1,5 +1,6 @@
 #include "strahler/network/relief_law.h"
 
+#include "strahler/base/smoothstep.h"
 #include "strahler/geometry/distance.h"
 
 #include <algorithm>
@@ -11,14 +12,9 @@ namespace {
 constexpr double kRangeWavelength = 15000.0; // metres, scale of mountain ranges and plains
 constexpr std::uint64_t kReliefStream = 0x72656c696566ull;
 
-double smoothstep(double t) noexcept {
-  t = std::clamp(t, 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
-
 /// 1 within half of `reach`, 0 beyond it, smooth between.
 double plateau(double distance, double reach) noexcept {
-  return smoothstep(2.0 * (1.0 - distance / reach));
+  return base::smoothstep(2.0 * (1.0 - distance / reach));
 }
 } // namespace
 
@@ -73,7 +69,7 @@ double ReliefLaw::mountainousness(geometry::Vec2 p) const noexcept {
   if (auto v = spec_.constraintAt(input::ConstraintKind::kMountainousness, p))
     return std::clamp(*v, 0.0, 1.0);
   const double ramp = spec_.params.coastRamp;
-  const double coast = smoothstep(land_.distanceToBoundary(p, ramp) / ramp);
+  const double coast = base::smoothstep(land_.distanceToBoundary(p, ramp) / ramp);
   const double ranges =
       0.5 + 0.5 * std::clamp(noise_.fbm(p / kRangeWavelength, 3) * 1.6, -1.0, 1.0);
   const double undrawn = coast * (0.25 + 0.75 * ranges);

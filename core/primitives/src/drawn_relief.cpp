@@ -1,5 +1,6 @@
 #include "strahler/primitives/drawn_relief.h"
 
+#include "strahler/base/smoothstep.h"
 #include "strahler/geometry/distance.h"
 #include "strahler/network/relief_law.h"
 #include "strahler/primitives/quantization.h"
@@ -26,11 +27,6 @@ constexpr double kCrestCalmReach = 1000.0;
 constexpr double kPlaneShare = 0.25;
 /// Steepest plane a scaled primitive keeps (terrain_primitives.cpp: tan 40° × plane share).
 constexpr double kMaxPlane = 0.84 * kPlaneShare;
-
-double smoothstep(double t) noexcept {
-  t = std::clamp(t, 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
 
 /// Nearest point of a polyline with the arc length there.
 struct AlongHit {
@@ -134,8 +130,8 @@ void liftCrests(const input::WorldSpec& spec, std::vector<TerrainPrimitive>& ter
       const auto k = std::min(static_cast<std::size_t>(s), samples - 2);
       const double f = std::clamp(s - static_cast<double>(k), 0.0, 1.0);
       const double tent = crest[k] + (crest[k + 1] - crest[k]) * f - kCrestFlank * hit.distance;
-      const double clear = smoothstep(bases[i].distance / kCrestRiverClearance);
-      const double hold = clear * smoothstep(2.0 * (1.0 - hit.distance / halfWidth));
+      const double clear = base::smoothstep(bases[i].distance / kCrestRiverClearance);
+      const double hold = clear * base::smoothstep(2.0 * (1.0 - hit.distance / halfWidth));
       if (tent > t.elevation && hold > 0.0) {
         const Vec2 down = hit.distance > 1.0
                               ? (t.center - hit.point) * (-kCrestFlank * kPlaneShare / hit.distance)
@@ -145,7 +141,7 @@ void liftCrests(const input::WorldSpec& spec, std::vector<TerrainPrimitive>& ter
         t.slope = {quantize(slope.x, Quantum::kSlope), quantize(slope.y, Quantum::kSlope)};
       }
       const double calm =
-          1.0 - kCrestCalm * clear * smoothstep(1.0 - hit.distance / kCrestCalmReach);
+          1.0 - kCrestCalm * clear * base::smoothstep(1.0 - hit.distance / kCrestCalmReach);
       t.amplitude = quantize(t.amplitude * calm, Quantum::kElevation);
     }
   }
@@ -196,7 +192,8 @@ double mountainGain(const input::Features& features, std::span<const double> rad
   double raise = 0.0, lower = 0.0;
   for (std::size_t m = 0; m < gains.size(); ++m) {
     const double excess =
-        (gains[m] - 1.0) * smoothstep(1.0 - distance(p, features.mountains[m].position) / radii[m]);
+        (gains[m] - 1.0) *
+        base::smoothstep(1.0 - distance(p, features.mountains[m].position) / radii[m]);
     raise = std::max(raise, excess);
     lower = std::min(lower, excess);
   }

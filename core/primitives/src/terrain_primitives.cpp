@@ -1,6 +1,7 @@
 #include "strahler/primitives/terrain_primitives.h"
 
 #include "strahler/base/random.h"
+#include "strahler/base/smoothstep.h"
 #include "strahler/geometry/distance.h"
 #include "strahler/network/relief_law.h"
 #include "strahler/primitives/quantization.h"
@@ -129,11 +130,6 @@ RiverHit nearestRidge(const std::vector<Ridge>& ridges, Vec2 p) {
   return best;
 }
 
-double smoothstep(double t) {
-  t = std::clamp(t, 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
-
 class BlockTerrain {
 public:
   BlockTerrain(const input::WorldSpec& spec, const analysis::Hydrology& h,
@@ -205,8 +201,8 @@ private:
     if (const double steepness = length(slope); steepness > kMaxHillslope)
       slope = slope * (kMaxHillslope / steepness);
     const double relief = std::max(0.0, b.elevation - a.elevation);
-    const double amplitude =
-        kAmplitudePerMetreOfRelief * relief * smoothstep(a.distance / (0.6 * kTerrainSpacing));
+    const double amplitude = kAmplitudePerMetreOfRelief * relief *
+                             base::smoothstep(a.distance / (0.6 * kTerrainSpacing));
     if (bases)
       bases->push_back({a.elevation, a.distance});
     TerrainPrimitive t;
