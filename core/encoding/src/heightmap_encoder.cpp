@@ -4,6 +4,7 @@
 
 #include "png_encoder.h"
 
+#include "strahler/base/guarded.h"
 #include "strahler/image/image.h"
 
 #include <algorithm>
@@ -138,14 +139,10 @@ base::Result<std::string> encodeUnguarded(const HeightGrid& grid, HeightmapForma
 } // namespace
 
 base::Result<std::string> encodeHeightmap(const HeightGrid& grid, HeightmapFormat format) {
-  try {
-    return encodeUnguarded(grid, format);
-  } catch (const std::bad_alloc&) {
-    return makeError(ErrorCode::kLimitExceeded,
-                     "heightmap grid " + sizeText(grid) + ": out of memory while encoding");
-  } catch (const std::exception& e) {
-    return makeError(ErrorCode::kInternal, "heightmap grid " + sizeText(grid) + ": " + e.what());
-  }
+  const std::string label = "heightmap grid " + sizeText(grid);
+  return base::guarded(
+      {.label = label, .outOfMemory = "out of memory while encoding", .failurePrefix = ""},
+      [&] { return encodeUnguarded(grid, format); });
 }
 
 const char* mimeType(HeightmapFormat format) noexcept {

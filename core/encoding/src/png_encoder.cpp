@@ -1,6 +1,8 @@
 // The only translation unit that includes libspng: its error codes become base::Error here.
 #include "png_encoder.h"
 
+#include "strahler/base/guarded.h"
+
 #include <cstddef>
 #include <exception>
 #include <memory>
@@ -192,13 +194,8 @@ base::Result<std::string> encodePng(const std::vector<std::uint8_t>& samples, in
 base::Result<std::string> encodePng(const std::vector<std::uint8_t>& samples, int width, int height,
                                     PngLayout layout, const PngOptions& options) {
   assertShape(samples, width, height, layout);
-  try {
-    return encodeUnguarded(samples, width, height, layout, options);
-  } catch (const std::bad_alloc&) {
-    return makeError(ErrorCode::kLimitExceeded, "png encoder: out of memory");
-  } catch (const std::exception& e) {
-    return makeError(ErrorCode::kInternal, std::string("png encoder: ") + e.what());
-  }
+  return base::guarded({.label = "png encoder", .failurePrefix = ""},
+                       [&] { return encodeUnguarded(samples, width, height, layout, options); });
 }
 
 } // namespace strahler::encoding::detail

@@ -3,6 +3,8 @@
 // naming the file here, and nothing OIIO-specific leaks through image.h or oiio_module.h.
 #include "oiio_module.h"
 
+#include "strahler/base/guarded.h"
+
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
@@ -289,74 +291,44 @@ base::Result<GrayImage> decodeFloatImageUnguarded(const std::string& bytes, Floa
   return readOpenedImage(*input, label, maxPixels);
 }
 
+/// How a read reports what OIIO threw: the exception's words, as a fault of the file.
+base::GuardWords readWords(std::string_view label) {
+  return {.label = label, .failure = ErrorCode::kInvalidInput, .failurePrefix = ""};
+}
+
 /// OpenImageIO behind the module boundary: each call catches everything OIIO may throw.
 class OpenImageIoModule final : public detail::OiioModule {
 public:
   base::Result<GrayImage> readGrayImage(const std::string& path,
                                         std::size_t maxPixels) const override {
-    try {
-      return readGrayImageUnguarded(path, maxPixels);
-    } catch (const std::bad_alloc&) {
-      return makeError(ErrorCode::kLimitExceeded, "image " + quoted(path) + ": out of memory");
-    } catch (const std::exception& e) {
-      return makeError(ErrorCode::kInvalidInput, "image " + quoted(path) + ": " + e.what());
-    } catch (...) {
-      return makeError(ErrorCode::kInternal, "image " + quoted(path) + ": unknown failure");
-    }
+    const std::string label = "image " + quoted(path);
+    return base::guarded(readWords(label), [&] { return readGrayImageUnguarded(path, maxPixels); });
   }
 
   base::Result<GrayImage> readFloatRaster(const std::string& path,
                                           std::size_t maxPixels) const override {
-    try {
-      return readFloatRasterUnguarded(path, maxPixels);
-    } catch (const std::bad_alloc&) {
-      return makeError(ErrorCode::kLimitExceeded, "raster " + quoted(path) + ": out of memory");
-    } catch (const std::exception& e) {
-      return makeError(ErrorCode::kInvalidInput, "raster " + quoted(path) + ": " + e.what());
-    } catch (...) {
-      return makeError(ErrorCode::kInternal, "raster " + quoted(path) + ": unknown failure");
-    }
+    const std::string label = "raster " + quoted(path);
+    return base::guarded(readWords(label),
+                         [&] { return readFloatRasterUnguarded(path, maxPixels); });
   }
 
   base::Status writePng(const std::string& path, const RgbImage& image) const override {
-    try {
-      return writePngUnguarded(path, image);
-    } catch (const std::exception& e) {
-      return makeError(ErrorCode::kIoError, "png " + quoted(path) + ": " + e.what());
-    } catch (...) {
-      return makeError(ErrorCode::kInternal, "png " + quoted(path) + ": unknown failure");
-    }
+    const std::string label = "png " + quoted(path);
+    return base::guarded({.label = label, .failure = ErrorCode::kIoError, .failurePrefix = ""},
+                         [&] { return writePngUnguarded(path, image); });
   }
 
   base::Result<std::string> encodeFloatImage(const std::vector<float>& pixels, int width,
                                              int height, FloatImageFormat format) const override {
-    try {
-      return encodeFloatImageUnguarded(pixels, width, height, format);
-    } catch (const std::bad_alloc&) {
-      return makeError(ErrorCode::kLimitExceeded,
-                       std::string(infoFor(format).label) + ": out of memory");
-    } catch (const std::exception& e) {
-      return makeError(ErrorCode::kInternal, std::string(infoFor(format).label) + ": " + e.what());
-    } catch (...) {
-      return makeError(ErrorCode::kInternal,
-                       std::string(infoFor(format).label) + ": unknown failure");
-    }
+    return base::guarded({.label = infoFor(format).label, .failurePrefix = ""},
+                         [&] { return encodeFloatImageUnguarded(pixels, width, height, format); });
   }
 
   base::Result<GrayImage> decodeFloatImage(const std::string& bytes, FloatImageFormat format,
                                            std::size_t maxPixels) const override {
-    try {
-      return decodeFloatImageUnguarded(bytes, format, maxPixels);
-    } catch (const std::bad_alloc&) {
-      return makeError(ErrorCode::kLimitExceeded,
-                       std::string(infoFor(format).label) + " in memory: out of memory");
-    } catch (const std::exception& e) {
-      return makeError(ErrorCode::kInvalidInput,
-                       std::string(infoFor(format).label) + " in memory: " + e.what());
-    } catch (...) {
-      return makeError(ErrorCode::kInternal,
-                       std::string(infoFor(format).label) + " in memory: unknown failure");
-    }
+    const std::string label = std::string(infoFor(format).label) + " in memory";
+    return base::guarded(readWords(label),
+                         [&] { return decodeFloatImageUnguarded(bytes, format, maxPixels); });
   }
 };
 

@@ -5,6 +5,8 @@
 #include "json_util.h"
 #include "ring_validation.h"
 
+#include "strahler/base/guarded.h"
+
 #include <algorithm>
 #include <exception>
 #include <new>
@@ -310,28 +312,16 @@ base::Result<repair::RepairedCoast> parseAndRepairUnguarded(std::string_view geo
   return repaired;
 }
 
-/// fn()'s result, or an error when it throws: out of memory, or an unexpected failure.
-template <class Fn> auto guarded(Fn&& fn) -> decltype(fn()) {
-  try {
-    return fn();
-  } catch (const std::bad_alloc&) {
-    return makeError(ErrorCode::kLimitExceeded, "coastline: out of memory");
-  } catch (const std::exception& e) {
-    return makeError(ErrorCode::kInternal,
-                     std::string("coastline: unexpected failure: ") + e.what());
-  }
-}
-
 } // namespace
 
 base::Result<geometry::MultiPolygon> parseCoastline(std::string_view geojson,
                                                     const InputLimits& limits) {
-  return guarded([&] { return parseCoastlineUnguarded(geojson, limits); });
+  return base::guarded("coastline", [&] { return parseCoastlineUnguarded(geojson, limits); });
 }
 
 base::Result<repair::RepairedCoast> parseAndRepairCoastline(std::string_view geojson,
                                                             const InputLimits& limits) {
-  return guarded([&] { return parseAndRepairUnguarded(geojson, limits); });
+  return base::guarded("coastline", [&] { return parseAndRepairUnguarded(geojson, limits); });
 }
 
 } // namespace strahler::input

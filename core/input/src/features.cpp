@@ -3,6 +3,7 @@
 #include "feature_checks.h"
 #include "json_util.h"
 
+#include "strahler/base/guarded.h"
 #include "strahler/input/feature_parser.h"
 
 #include <cmath>
@@ -271,14 +272,9 @@ base::Result<Features> parseFeatures(std::string_view geoJson,
                                      const geometry::LocalProjection& projection,
                                      const geometry::MultiPolygon& landLocal, const Params& params,
                                      const InputLimits& limits) {
-  try {
-    return parseUnguarded(geoJson, projection, landLocal, params, limits);
-  } catch (const std::bad_alloc&) {
-    return makeError(ErrorCode::kLimitExceeded, "features: out of memory");
-  } catch (const std::exception& e) { // a bug: the fuzz harness fails on kInternal
-    return makeError(ErrorCode::kInternal,
-                     std::string("features: unexpected failure: ") + e.what());
-  }
+  // An exception is a bug: the fuzz harness fails on the kInternal it becomes.
+  return base::guarded(
+      "features", [&] { return parseUnguarded(geoJson, projection, landLocal, params, limits); });
 }
 
 } // namespace strahler::input

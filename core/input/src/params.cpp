@@ -3,6 +3,8 @@
 #include "json_util.h"
 #include "vegetation_params.h"
 
+#include "strahler/base/guarded.h"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -438,13 +440,7 @@ base::Status validateParams(const Params& p) {
 }
 
 base::Result<Params> parseParams(std::string_view json, const InputLimits& limits) {
-  try {
-    return parseParamsUnguarded(json, limits);
-  } catch (const std::bad_alloc&) {
-    return makeError(ErrorCode::kLimitExceeded, "params: out of memory");
-  } catch (const std::exception& e) {
-    return makeError(ErrorCode::kInternal, std::string("params: unexpected failure: ") + e.what());
-  }
+  return base::guarded("params", [&] { return parseParamsUnguarded(json, limits); });
 }
 
 std::string canonicalJson(const Params& params) {

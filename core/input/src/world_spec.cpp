@@ -3,6 +3,7 @@
 #include "json_util.h"
 #include "mouths.h"
 
+#include "strahler/base/guarded.h"
 #include "strahler/input/canonical_coastline.h"
 #include "strahler/input/coastline.h"
 #include "strahler/input/feature_parser.h"
@@ -268,23 +269,13 @@ std::optional<double> WorldSpec::constraintAt(ConstraintKind kind,
 base::Result<WorldSpec> makeWorldSpec(std::string name, std::string_view coastGeoJson,
                                       const Params& params, const InputLimits& limits,
                                       bool repair) {
-  try {
+  return base::guarded("world", [&] {
     return buildWorldSpec(std::move(name), coastGeoJson, params, fs::path(), limits, repair);
-  } catch (const std::bad_alloc&) {
-    return makeError(ErrorCode::kLimitExceeded, "world: out of memory");
-  } catch (const std::exception& e) {
-    return makeError(ErrorCode::kInternal, std::string("world: unexpected failure: ") + e.what());
-  }
+  });
 }
 
 base::Result<WorldSpec> loadWorldSpec(const WorldSources& sources, const InputLimits& limits) {
-  try {
-    return loadWorldSpecUnguarded(sources, limits);
-  } catch (const std::bad_alloc&) {
-    return makeError(ErrorCode::kLimitExceeded, "world: out of memory");
-  } catch (const std::exception& e) {
-    return makeError(ErrorCode::kInternal, std::string("world: unexpected failure: ") + e.what());
-  }
+  return base::guarded("world", [&] { return loadWorldSpecUnguarded(sources, limits); });
 }
 
 } // namespace strahler::input

@@ -1,5 +1,6 @@
 #include "strahler/quality/dem_file.h"
 
+#include "strahler/base/guarded.h"
 #include "strahler/image/image.h"
 
 #include <algorithm>
@@ -287,11 +288,8 @@ HeightRaster squareDegreeCells(const HeightRaster& grid) {
 }
 
 base::Result<HeightRaster> readEsriAsciiGrid(const std::string& path) {
-  try {
-    return AsciiGridReader(path).read();
-  } catch (const std::bad_alloc&) {
-    return makeError(ErrorCode::kLimitExceeded, "dem '" + path + "': out of memory");
-  }
+  const std::string label = "dem '" + path + "'";
+  return base::guarded(label, [&] { return AsciiGridReader(path).read(); });
 }
 
 base::Result<HeightRaster> readDemFile(const std::string& path, std::optional<double> cellSize) {

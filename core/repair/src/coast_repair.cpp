@@ -6,6 +6,8 @@
 #include "pinches.h"
 #include "ring_loops.h"
 
+#include "strahler/base/guarded.h"
+
 #include <algorithm>
 #include <exception>
 #include <map>
@@ -407,15 +409,11 @@ base::Result<RepairedCoast> repairUnguarded(const std::vector<InputPolygon>& inp
 
 base::Result<RepairedCoast> repairCoastline(const std::vector<InputPolygon>& polygons,
                                             const RepairLimits& limits) {
-  try {
-    return repairUnguarded(polygons, limits);
-  } catch (const std::bad_alloc&) {
-    return makeError(ErrorCode::kLimitExceeded, "coastline: out of memory while repairing");
-  } catch (const std::exception& e) {
-    return makeError(ErrorCode::kInvalidInput,
-                     std::string("coastline: the repair could not mend this coastline: ") +
-                         e.what());
-  }
+  return base::guarded({.label = "coastline",
+                        .outOfMemory = "out of memory while repairing",
+                        .failure = ErrorCode::kInvalidInput,
+                        .failurePrefix = "the repair could not mend this coastline: "},
+                       [&] { return repairUnguarded(polygons, limits); });
 }
 
 } // namespace strahler::repair
