@@ -38,7 +38,7 @@ std::optional<CesiumAvailability::Range> CesiumAvailability::level(int z) const 
                cell(land_.east + 180.0, z, 2 * rows), cell(land_.north + 90.0, z, rows)};
 }
 
-bool CesiumAvailability::available(const tiling::TileId& tile) const {
+bool CesiumAvailability::available(const geometry::TileId& tile) const {
   const std::optional<Range> r = level(tile.z);
   if (!r)
     return false;
@@ -46,7 +46,7 @@ bool CesiumAvailability::available(const tiling::TileId& tile) const {
   return tile.x >= r->startX && tile.x <= r->endX && tmsRow >= r->startY && tmsRow <= r->endY;
 }
 
-std::string CesiumAvailability::metadataJson(const tiling::TileId& tile) const {
+std::string CesiumAvailability::metadataJson(const geometry::TileId& tile) const {
   if (tile.z % kMetadataLevels != 0)
     return {};
   const std::int64_t tmsRow = geometry::flipRow(tile.z, tile.y);

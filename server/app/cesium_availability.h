@@ -31,11 +31,11 @@ public:
   /// The available tiles of level z (nothing past the deepest level).
   std::optional<Range> level(int z) const;
   /// True when `tile` (rows from the north, as TileId) is available.
-  bool available(const tiling::TileId& tile) const;
+  bool available(const geometry::TileId& tile) const;
   /// The metadata extension's JSON of `tile`: the available ranges of the kMetadataLevels
   /// levels below it among its descendants; "" when its level is not a multiple of
   /// kMetadataLevels.
-  std::string metadataJson(const tiling::TileId& tile) const;
+  std::string metadataJson(const geometry::TileId& tile) const;
   /// layer.json: format, tiles template, version, scheme, projection, bounds, zooms,
   /// extensions, attribution, `available` for levels 0..kMetadataLevels and
   /// metadataAvailability. Its `version` is the world's content version (worldVersion()),

@@ -88,7 +88,7 @@ base::Result<TileRequest> parseCesiumTerrainRoute(const std::string& world,
     if (name != "extensions" && name != "v")
       return badTerrain("unknown query parameter '" + name.substr(0, 64) +
                         "' (terrain tiles take only extensions and v)");
-  STRAHLER_ASSIGN_OR_RETURN(const tiling::TileId tms,
+  STRAHLER_ASSIGN_OR_RETURN(const geometry::TileId tms,
                             parseZxy(std::span(s).subspan(3), ".terrain", "a Cesium terrain tile"));
   TileRequest request;
   request.world = world;

@@ -18,7 +18,7 @@ base::Result<RenderedTile> CesiumTerrainRenderer::render(const RenderContext& co
                                                          const TileRequest& request,
                                                          int size) const {
   RenderedTile out;
-  const tiling::TileId& tile = request.tile;
+  const geometry::TileId& tile = request.tile;
   const unsigned extensions = request.options.extensions;
   const geometry::Aabb box = context.scheme.geographicBounds(tile);
   const encoding::GeographicRect rect{box.min.x, box.min.y, box.max.x, box.max.y};

@@ -125,7 +125,7 @@ writeVegetation(const construction::World& world, const tiling::TileEvaluator& e
     std::vector<std::vector<vegetation::Instance>> row(static_cast<std::size_t>(columns));
     std::vector<base::Status> status(static_cast<std::size_t>(columns), base::Ok{});
     forChunks(0, columns, 1, threads, [&](int i, int) {
-      const vegetation::WebTile tile{kVegetationZoom, x0 + i, y};
+      const geometry::TileId tile{kVegetationZoom, x0 + i, y};
       RenderedTile cost;
       const LatticeDensity density(context, world, water, tile, cost);
       auto placed = vegetation::placeWebTile(world.data().params.seed, projection, tile, density);

@@ -21,7 +21,7 @@ constexpr int kLayerBorder = layers::SkyView::kReach + kSkyStep - 1;
 /// The placement border of `tile`, m: every candidate a tile's placement asks about lies
 /// closer than this to the footprint (dependencyBorder, plus the spacing by which the
 /// candidate grid grows the box, plus one cell a candidate may lie beyond it).
-double placementReach(const vegetation::WebTile& tile) {
+double placementReach(const geometry::TileId& tile) {
   const vegetation::SpeciesMask mask = vegetation::visibleSpecies(tile.z);
   double reach = 0.0;
   for (std::size_t s = 0; s < vegetation::kSpecies.size(); ++s)
@@ -35,7 +35,7 @@ double placementReach(const vegetation::WebTile& tile) {
 } // namespace
 
 LatticeDensity::LatticeDensity(const RenderContext& context, const construction::World& world,
-                               const tiling::WaterMask& water, const vegetation::WebTile& tile,
+                               const tiling::WaterMask& water, const geometry::TileId& tile,
                                RenderedTile& out)
     : projection_(world.data().projectionCenter.x, world.data().projectionCenter.y) {
   STRAHLER_ASSERT(tile.z >= kLatticeZoom && tile.z <= kLatticeZoom + 7,
@@ -50,7 +50,7 @@ LatticeDensity::LatticeDensity(const RenderContext& context, const construction:
   int pad = static_cast<int>(std::ceil(1.2 * placementReach(tile) / metresPerPoint)) + 2;
   pad += pad % 2; // even: the block's first point keeps even global indices
   const int border = pad + kLayerBorder;
-  const tiling::TileId id{tile.z, tile.x, tile.y};
+  const geometry::TileId id{tile.z, tile.x, tile.y};
   const tiling::SampleGrid grid = context.scheme.borderedRasterGrid(id, size, border);
   const std::vector<double> bordered = evaluateGrid(context, grid, out);
   side_ = size + 2 * pad;

@@ -31,8 +31,7 @@ public:
   /// of every species visibleSpecies(z) places, its heights from `context` (a Web Mercator
   /// scheme), the world's rivers and `water`. `out` receives the evaluation's cost.
   LatticeDensity(const RenderContext& context, const construction::World& world,
-                 const tiling::WaterMask& water, const vegetation::WebTile& tile,
-                 RenderedTile& out);
+                 const tiling::WaterMask& water, const geometry::TileId& tile, RenderedTile& out);
 
   /// See DensityField::sample (placement species mapped to layer species by name).
   void sample(std::size_t species, std::span<const geometry::Vec2> points,

@@ -110,18 +110,18 @@ base::Result<std::int64_t> parseDecimal(const std::string& text, int maxDigits) 
   return v;
 }
 
-base::Result<tiling::TileId> parseTileCoordinates(const std::string& z, const std::string& x,
-                                                  const std::string& y) {
+base::Result<geometry::TileId> parseTileCoordinates(const std::string& z, const std::string& x,
+                                                    const std::string& y) {
   auto zoom = parseDecimal(z, 2), column = parseDecimal(x, 10), row = parseDecimal(y, 10);
   for (auto* v : {&zoom, &column, &row})
     if (!*v)
       return base::makeError(base::ErrorCode::kInvalidInput,
                              "tile coordinate " + v->error().message);
-  return tiling::TileId{static_cast<int>(zoom.value()), column.value(), row.value()};
+  return geometry::TileId{static_cast<int>(zoom.value()), column.value(), row.value()};
 }
 
-base::Result<tiling::TileId> parseZxy(std::span<const std::string> zxy, std::string_view suffix,
-                                      std::string_view tile) {
+base::Result<geometry::TileId> parseZxy(std::span<const std::string> zxy, std::string_view suffix,
+                                        std::string_view tile) {
   STRAHLER_ASSERT(zxy.size() == 3, "parseZxy takes the segments {z}, {x} and {y}{suffix}");
   const std::string& last = zxy[2];
   if (last.size() <= suffix.size() ||

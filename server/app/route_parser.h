@@ -30,13 +30,13 @@ base::Result<std::int64_t> parseDecimal(const std::string& text, int maxDigits =
 
 /// A tile from the decimal texts of its zoom (at most 2 digits), column and row (at most 10
 /// each), by parseDecimal(); else kInvalidInput "tile coordinate …", the first bad one named.
-base::Result<tiling::TileId> parseTileCoordinates(const std::string& z, const std::string& x,
-                                                  const std::string& y);
+base::Result<geometry::TileId> parseTileCoordinates(const std::string& z, const std::string& x,
+                                                    const std::string& y);
 
 /// The tile of a route's last three segments, "{z}/{x}/{y}{suffix}" (`zxy`, three of them):
 /// kInvalidInput "<tile> is named {y}<suffix>" (`tile`: e.g. "a vector tile") when the last
 /// does not end in `suffix` after at least one character, else parseTileCoordinates().
-base::Result<tiling::TileId> parseZxy(std::span<const std::string> zxy, std::string_view suffix,
-                                      std::string_view tile);
+base::Result<geometry::TileId> parseZxy(std::span<const std::string> zxy, std::string_view suffix,
+                                        std::string_view tile);
 
 } // namespace strahler::app

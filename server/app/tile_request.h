@@ -31,7 +31,7 @@ enum CesiumExtension : unsigned {
 /// that knows nothing of the transport.
 struct TileRequest {
   tiling::SchemeKind scheme = tiling::SchemeKind::kWebMercator; ///< The pyramid.
-  tiling::TileId tile;                                          ///< z/x/y in that pyramid.
+  geometry::TileId tile;                                        ///< z/x/y in that pyramid.
   TileFormat format = TileFormat::kTerrainRgb;                  ///< Its kind and encoding.
   TileOptions options; ///< Canonical: size 0 for the default.
   std::string world;   ///< Id of the world; "" where one service serves one world.

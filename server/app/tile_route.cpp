@@ -38,7 +38,7 @@ base::Result<TileRequest> parseTileRoute(const std::string& world,
   const std::size_t dot = last.find('.');
   if (dot == std::string::npos)
     return badTile("tile name must be {y}.{format}");
-  STRAHLER_ASSIGN_OR_RETURN(const tiling::TileId tile,
+  STRAHLER_ASSIGN_OR_RETURN(const geometry::TileId tile,
                             parseTileCoordinates(s[3], s[4], last.substr(0, dot)));
   std::string formatName = last.substr(dot + 1);
   if (const auto e = query.find("encoding"); e != query.end()) {

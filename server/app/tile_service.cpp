@@ -59,7 +59,7 @@ base::Status TileService::checkTile(const TileRequest& request) const {
     return base::makeError(base::ErrorCode::kInvalidInput,
                            "layer tiles are served in the Web Mercator and local pyramids");
   const tiling::TileScheme& s = scheme(request.scheme);
-  const tiling::TileId& t = request.tile;
+  const geometry::TileId& t = request.tile;
   if (!s.contains(t))
     return base::makeError(base::ErrorCode::kNotFound,
                            "tile " + std::to_string(t.z) + "/" + std::to_string(t.x) + "/" +

@@ -71,7 +71,7 @@ bool ringContains(const MercatorLine& ring, Vec2 p) noexcept {
 /// Tile units of normalised Web Mercator for one tile: tile = (m · 2^z − (x, y)) · extent.
 class TileFrame {
 public:
-  explicit TileFrame(const tiling::TileId& tile)
+  explicit TileFrame(const geometry::TileId& tile)
       : scale_(std::ldexp(1.0, tile.z)), x_(static_cast<double>(tile.x)),
         y_(static_cast<double>(tile.y)) {
     const double margin = kVectorBuffer / kExtent;
@@ -164,7 +164,7 @@ double contourInterval(int z) noexcept {
   return z >= 16 ? 5.0 : kByZoom[z - 8];
 }
 
-Layer riversLayer(const WorldVectors& world, const tiling::TileId& tile) {
+Layer riversLayer(const WorldVectors& world, const geometry::TileId& tile) {
   Layer layer{"rivers", vector_tile::kDefaultExtent, {}};
   const TileFrame frame(tile);
   const int minOrder = minRiverOrder(tile.z, world.maxOrder);
@@ -184,7 +184,7 @@ Layer riversLayer(const WorldVectors& world, const tiling::TileId& tile) {
   return layer;
 }
 
-Layer waterLayer(const WorldVectors& world, const tiling::TileId& tile) {
+Layer waterLayer(const WorldVectors& world, const geometry::TileId& tile) {
   Layer layer{"water", vector_tile::kDefaultExtent, {}};
   const TileFrame frame(tile);
   const std::vector<Vec2> square = {
@@ -231,7 +231,7 @@ Layer waterLayer(const WorldVectors& world, const tiling::TileId& tile) {
   return layer;
 }
 
-Layer featuresLayer(const WorldVectors& world, const tiling::TileId& tile) {
+Layer featuresLayer(const WorldVectors& world, const geometry::TileId& tile) {
   Layer layer{"features", vector_tile::kDefaultExtent, {}};
   if (world.features == nullptr)
     return layer;

@@ -72,15 +72,15 @@ double contourInterval(int z) noexcept;
 
 /// The `rivers` layer of `tile`: sections of the orders visible at its zoom, clipped to the
 /// tile and its buffer, simplified; attributes order, flow, width, rosgen.
-vector_tile::Layer riversLayer(const WorldVectors& world, const tiling::TileId& tile);
+vector_tile::Layer riversLayer(const WorldVectors& world, const geometry::TileId& tile);
 
 /// The `water` layer of `tile`: the sea (the tile and its buffer minus the land, kind "sea")
 /// and the lakes (the land's holes, kind "lake"), clipped, exteriors clockwise in tile units.
-vector_tile::Layer waterLayer(const WorldVectors& world, const tiling::TileId& tile);
+vector_tile::Layer waterLayer(const WorldVectors& world, const geometry::TileId& tile);
 
 /// The `features` layer of `tile`: the artist's mountains (points) and ridges and rivers
 /// (lines), with attributes kind and, when drawn, name, elevation and radius.
-vector_tile::Layer featuresLayer(const WorldVectors& world, const tiling::TileId& tile);
+vector_tile::Layer featuresLayer(const WorldVectors& world, const geometry::TileId& tile);
 
 /// The `contours` layer of a tile from `heights`, the kContourGrid² pixel-centre samples of
 /// its raster grid plus a one-sample border ((kContourGrid + 2)², borderedRasterGrid): the

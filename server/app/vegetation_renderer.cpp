@@ -32,7 +32,7 @@ base::Result<RenderedTile> VegetationRenderer::render(const RenderContext& conte
   if (context.scheme.kind() != tiling::SchemeKind::kWebMercator)
     return base::makeError(base::ErrorCode::kInvalidInput,
                            "vegetation tiles are served in the Web Mercator pyramid only");
-  const vegetation::WebTile tile{request.tile.z, request.tile.x, request.tile.y};
+  const geometry::TileId& tile = request.tile;
   if (vegetation::visibleSpecies(tile.z) == 0)
     return base::makeError(base::ErrorCode::kNotFound,
                            "no vegetation at zoom " + std::to_string(tile.z) +

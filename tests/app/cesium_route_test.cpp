@@ -33,7 +33,7 @@ TEST(CesiumRoute, TmsRowsBecomeRowsFromTheNorth) {
   EXPECT_EQ(r.scheme, tiling::SchemeKind::kGeographic);
   EXPECT_EQ(r.format, TileFormat::kQuantizedMesh);
   EXPECT_EQ(r.kind(), TileKind::kTerrain);
-  EXPECT_EQ(r.tile, (tiling::TileId{3, 9, 5})); // 2^3 − 1 − 2
+  EXPECT_EQ(r.tile, (geometry::TileId{3, 9, 5})); // 2^3 − 1 − 2
   EXPECT_EQ(r.world, "w");
   EXPECT_EQ(r.options.extensions, 0u);
   EXPECT_FALSE(r.options.gzip);
@@ -145,7 +145,7 @@ TEST(CesiumAvailability, MetadataTilesCarryTheNextLevelsOfTheirDescendants) {
     EXPECT_TRUE(ranges.empty());
   // Level 10's tile over the land lists levels 11..17 only (the pyramid ends there).
   const auto r10 = a.level(10);
-  const tiling::TileId t10{10, r10->startX, (1 << 10) - 1 - r10->startY};
+  const geometry::TileId t10{10, r10->startX, (1 << 10) - 1 - r10->startY};
   const auto deep = nlohmann::json::parse(a.metadataJson(t10));
   EXPECT_EQ(deep["available"].size(), 7u);
   const auto& first = deep["available"][0][0];

@@ -36,7 +36,7 @@ const TileService& service() {
 }
 
 /// A z12 Web Mercator tile over the island's hills, rivers in it (as relief_tile_test's).
-constexpr tiling::TileId kHills{12, 1736, 1494};
+constexpr geometry::TileId kHills{12, 1736, 1494};
 
 /// A decoded grey PNG: its samples (8- or 16-bit) and depth.
 struct Grey {
@@ -68,7 +68,7 @@ Grey decode(const std::string& png) {
   return out;
 }
 
-TileRequest layerRequest(LayerName name, tiling::TileId tile, int size = 0) {
+TileRequest layerRequest(LayerName name, geometry::TileId tile, int size = 0) {
   TileRequest r;
   r.format = TileFormat::kLayerPng;
   r.tile = tile;
@@ -143,7 +143,7 @@ struct WaterCount {
   int sea = 0, seaWet = 0, land = 0, landWet = 0;
 };
 
-WaterCount countWater(const tiling::TileId& tile) {
+WaterCount countWater(const geometry::TileId& tile) {
   const Grey water = render(layerRequest(LayerName::kWater, tile));
   TileRequest png16;
   png16.format = TileFormat::kPng16;
@@ -219,14 +219,14 @@ TEST(LayerTile, TilesAreCutsOfTheirParentSoNeighboursAgreeAlongTheirEdges) {
   // A parent tile of 2n pixels samples exactly the points of its four children of n pixels:
   // each child is the parent's quarter, so the children agree with each other along every
   // shared edge (the sky view's rays and the slopes reach across it).
-  const tiling::TileId parent{kHills.z - 1, kHills.x / 2, kHills.y / 2};
+  const geometry::TileId parent{kHills.z - 1, kHills.x / 2, kHills.y / 2};
   const int n = 128;
   for (const LayerName name : {LayerName::kSlope, LayerName::kIllumination, LayerName::kHumidity,
                                LayerName::kVegetation, LayerName::kWater, LayerName::kAspect}) {
     const Grey whole = render(layerRequest(name, parent, 2 * n));
     ASSERT_EQ(whole.samples.size(), static_cast<std::size_t>(4 * n * n));
     for (int q = 0; q < 4; ++q) {
-      const tiling::TileId child{kHills.z, parent.x * 2 + q % 2, parent.y * 2 + q / 2};
+      const geometry::TileId child{kHills.z, parent.x * 2 + q % 2, parent.y * 2 + q / 2};
       const Grey part = render(layerRequest(name, child, n));
       ASSERT_EQ(part.samples.size(), static_cast<std::size_t>(n * n));
       for (int y = 0; y < n; ++y)

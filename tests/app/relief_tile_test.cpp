@@ -29,7 +29,7 @@ construction::WorldData island() {
 }
 
 /// A z12 Web Mercator tile over the island's hills (its east neighbour is hilly too).
-constexpr tiling::TileId kHills{12, 1736, 1494};
+constexpr geometry::TileId kHills{12, 1736, 1494};
 
 /// Width, height, bit depth and colour type from a PNG's IHDR, read by hand (0s if not a PNG).
 struct PngHeader {
@@ -56,8 +56,8 @@ TEST(ReliefTile, SamplesTheHeightmapTilesPoints) {
   const tiling::TileEvaluator evaluator(service.world());
   for (const auto kind : {tiling::SchemeKind::kWebMercator, tiling::SchemeKind::kLocal}) {
     const tiling::TileScheme& scheme = service.scheme(kind);
-    const tiling::TileId tile =
-        kind == tiling::SchemeKind::kLocal ? tiling::TileId{2, 1, 2} : kHills;
+    const geometry::TileId tile =
+        kind == tiling::SchemeKind::kLocal ? geometry::TileId{2, 1, 2} : kHills;
     const int n = 64, w = n + 2;
     const std::vector<double> bordered = evaluator.evaluate(scheme.borderedRasterGrid(tile, n));
     const std::vector<double> raster = evaluator.evaluate(scheme.rasterGrid(tile, n));
@@ -82,7 +82,7 @@ TEST(ReliefTile, NeighboursAreCutsOfOnePictureSoTheirEdgesShadeAlike) {
   const tiling::TileEvaluator evaluator(service.world());
   const tiling::TileScheme& scheme = service.scheme(tiling::SchemeKind::kWebMercator);
   const int n = 256, w = n + 2;
-  const tiling::TileId east{kHills.z, kHills.x + 1, kHills.y};
+  const geometry::TileId east{kHills.z, kHills.x + 1, kHills.y};
   const tiling::SampleGrid gridA = scheme.borderedRasterGrid(kHills, n);
   const std::vector<double> a = evaluator.evaluate(gridA);
   const std::vector<double> b = evaluator.evaluate(scheme.borderedRasterGrid(east, n));

@@ -48,7 +48,7 @@ TEST(RouteParser, ParsesBoundedDecimals) {
 TEST(RouteParser, ReadsATilesZxyAndNamesWhatIsWrong) {
   const std::vector<std::string> good{"12", "1736", "1494.mvt"};
   EXPECT_EQ(test_support::valueOf(parseZxy(good, ".mvt", "a vector tile")),
-            (tiling::TileId{12, 1736, 1494}));
+            (geometry::TileId{12, 1736, 1494}));
   const auto refused = [](std::vector<std::string> zxy, const char* suffix) {
     const auto t = parseZxy(zxy, suffix, "a vector tile");
     EXPECT_FALSE(t.ok());
@@ -62,7 +62,8 @@ TEST(RouteParser, ReadsATilesZxyAndNamesWhatIsWrong) {
             "tile coordinate 'x' is not a non-negative integer");
   EXPECT_EQ(refused({"1", "0", "01.mvt"}, ".mvt"),
             "tile coordinate '01' has a leading zero (write 1)");
-  EXPECT_EQ(test_support::valueOf(parseTileCoordinates("0", "0", "0")), (tiling::TileId{0, 0, 0}));
+  EXPECT_EQ(test_support::valueOf(parseTileCoordinates("0", "0", "0")),
+            (geometry::TileId{0, 0, 0}));
 }
 
 } // namespace

@@ -55,7 +55,7 @@ TEST(TileRequest, TheRouteFillsEveryFieldOfTheRequest) {
   ASSERT_TRUE(request.ok());
   EXPECT_EQ(request.value().world, "island");
   EXPECT_EQ(request.value().scheme, tiling::SchemeKind::kLocal);
-  EXPECT_EQ(request.value().tile, (tiling::TileId{2, 1, 3}));
+  EXPECT_EQ(request.value().tile, (geometry::TileId{2, 1, 3}));
   EXPECT_EQ(request.value().format, TileFormat::kGlb);
   EXPECT_EQ(request.value().kind(), TileKind::kMesh);
   EXPECT_EQ(request.value().options.size, 128);

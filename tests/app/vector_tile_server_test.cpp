@@ -33,11 +33,11 @@ using vector_tile::GeometryType;
 using vector_tile::Point;
 
 /// A z12 tile over the island's hills (its east and south neighbours are hilly too).
-constexpr tiling::TileId kHills{12, 1736, 1494};
+constexpr geometry::TileId kHills{12, 1736, 1494};
 /// A z10 tile over the island with its coast.
-constexpr tiling::TileId kCoast{10, 434, 373};
+constexpr geometry::TileId kCoast{10, 434, 373};
 
-std::string path(const tiling::TileId& t) {
+std::string path(const geometry::TileId& t) {
   return "/worlds/island/vector/" + std::to_string(t.z) + "/" + std::to_string(t.x) + "/" +
          std::to_string(t.y) + ".mvt";
 }
@@ -57,7 +57,7 @@ template <class T> T property(const vector_tile::Feature& f, const std::string& 
   return T{};
 }
 
-vector_tile::Tile fetch(const Running& s, const tiling::TileId& t) {
+vector_tile::Tile fetch(const Running& s, const geometry::TileId& t) {
   const HttpResponse r = request(s.port(), path(t));
   EXPECT_EQ(r.status, 200) << path(t) << " " << r.body;
   auto tile = vector_tile::decodeTile(r.body);
@@ -281,7 +281,7 @@ TEST(VectorTileServer, TheHillsTileIsTheGoldenOne) {
 }
 
 /// Longitude/latitude of the point (u, v) of `tile` (0..1 from its north-west corner).
-geometry::Vec2 lonLatIn(const tiling::TileId& tile, double u, double v) {
+geometry::Vec2 lonLatIn(const geometry::TileId& tile, double u, double v) {
   const double n = std::ldexp(1.0, tile.z);
   const double mx = (static_cast<double>(tile.x) + u) / n,
                my = (static_cast<double>(tile.y) + v) / n;

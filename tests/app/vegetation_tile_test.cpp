@@ -32,15 +32,15 @@ using test_support::request;
 using test_support::Running;
 
 /// A z16 tile in the island's hills (under layer_tile_test's z12 kHills), trees on it.
-constexpr tiling::TileId kForest{16, 27784, 23912};
+constexpr geometry::TileId kForest{16, 27784, 23912};
 /// A z16 tile with trees and bushes under it (at zoom 17).
-constexpr tiling::TileId kScrub{16, 27783, 23907};
+constexpr geometry::TileId kScrub{16, 27783, 23907};
 /// A z16 tile on the island's coast: land and sea.
-constexpr tiling::TileId kShore{16, 27796, 23873};
+constexpr geometry::TileId kShore{16, 27796, 23873};
 /// A z16 tile at sea, north of kShore.
-constexpr tiling::TileId kSea{16, 27796, 23872};
+constexpr geometry::TileId kSea{16, 27796, 23872};
 
-std::string path(const tiling::TileId& t) {
+std::string path(const geometry::TileId& t) {
   return "/worlds/island/vegetation/" + std::to_string(t.z) + "/" + std::to_string(t.x) + "/" +
          std::to_string(t.y) + ".json";
 }
@@ -61,7 +61,7 @@ std::vector<std::uint8_t> greyPixels(const std::string& png) {
   return raw;
 }
 
-nlohmann::json fetch(const Running& s, const tiling::TileId& t) {
+nlohmann::json fetch(const Running& s, const geometry::TileId& t) {
   const HttpResponse r = request(s.port(), path(t));
   EXPECT_EQ(r.status, 200) << path(t) << " " << r.body;
   return r.status == 200 ? nlohmann::json::parse(r.body) : nlohmann::json::object();
@@ -77,7 +77,7 @@ struct Island {
   tiling::TileScheme web = tiling::TileScheme::webMercator(projection);
   tiling::WaterMask water{world, projection};
 
-  LatticeDensity density(const tiling::TileId& t) {
+  LatticeDensity density(const geometry::TileId& t) {
     RenderedTile cost;
     return LatticeDensity(RenderContext{evaluator, web}, world, water, {t.z, t.x, t.y}, cost);
   }
@@ -103,8 +103,8 @@ TEST(VegetationRoute, TheRouterAndTheParserNameTheTileAndItsCoding) {
 
 TEST(LatticeDensity, APointHasTheSameDensityWhicheverTileAsks) {
   Island island;
-  const tiling::TileId east{16, kForest.x + 1, kForest.y};
-  const tiling::TileId child{17, 2 * kForest.x + 1, 2 * kForest.y + 1};
+  const geometry::TileId east{16, kForest.x + 1, kForest.y};
+  const geometry::TileId child{17, 2 * kForest.x + 1, 2 * kForest.y + 1};
   const LatticeDensity a = island.density(kForest);
   const LatticeDensity b = island.density(east);
   const LatticeDensity c = island.density(child);

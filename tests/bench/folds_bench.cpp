@@ -47,7 +47,7 @@ std::vector<tiling::SampleGrid> grids() {
   const Vec2 c = foldedData().projectionCenter;
   const tiling::TileScheme web =
       tiling::TileScheme::webMercator(geometry::LocalProjection(c.x, c.y));
-  const tiling::TileId centre = test_support::webTileAt(kOroLon, kOroLat, 12);
+  const geometry::TileId centre = test_support::webTileAt(kOroLon, kOroLat, 12);
   std::vector<tiling::SampleGrid> out;
   for (int dy = -2; dy <= 2; ++dy)
     for (int dx = -2; dx <= 2; ++dx)

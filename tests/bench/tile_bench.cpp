@@ -44,7 +44,7 @@ const Fixture& largeFixture() {
 }
 
 /// A web tile over land at zoom z (Mallorca's centre).
-tiling::TileId tileAt(int z) {
+geometry::TileId tileAt(int z) {
   const geometry::Vec2 c = fixture().world.data().projectionCenter;
   return test_support::webTileAt(c.x, c.y, z);
 }
@@ -113,12 +113,12 @@ void BM_TileAllPrimitives(benchmark::State& state) {
 void BM_TileNeighbourhood(benchmark::State& state) {
   const Fixture& f = fixture();
   const int z = static_cast<int>(state.range(0));
-  const tiling::TileId centre = tileAt(z);
-  std::vector<tiling::TileId> tiles;
+  const geometry::TileId centre = tileAt(z);
+  std::vector<geometry::TileId> tiles;
   std::size_t centreIndex = 0;
   for (std::int64_t dy = -1; dy <= 1; ++dy)
     for (std::int64_t dx = -1; dx <= 1; ++dx) {
-      const tiling::TileId t{z, centre.x + dx, centre.y + dy};
+      const geometry::TileId t{z, centre.x + dx, centre.y + dy};
       if (!f.web.contains(t))
         continue;
       if (dx == 0 && dy == 0)
@@ -175,7 +175,7 @@ void BM_TileFixedCount(benchmark::State& state) {
 void BM_TileWorldSize(benchmark::State& state) {
   const Fixture& f = state.range(1) == 1 ? largeFixture() : fixture();
   const geometry::Vec2 c = f.world.data().projectionCenter;
-  const tiling::TileId tile = test_support::webTileAt(c.x, c.y, static_cast<int>(state.range(0)));
+  const geometry::TileId tile = test_support::webTileAt(c.x, c.y, static_cast<int>(state.range(0)));
   const tiling::SampleGrid grid = f.web.rasterGrid(tile, 256);
   for (auto _ : state)
     benchmark::DoNotOptimize(f.evaluator.evaluate(grid));

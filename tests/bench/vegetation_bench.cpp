@@ -47,7 +47,7 @@ BENCHMARK(BM_VegetationTile256NoGrowth)->Unit(benchmark::kMillisecond);
 
 void BM_VegetationJson(benchmark::State& state) {
   const geometry::LocalProjection projection(7.5, 46.5);
-  const WebTile tile{17, 68000, 46000}; // the bytes, not the tile's position, are measured
+  const geometry::TileId tile{17, 68000, 46000}; // the bytes, not the tile's position, are measured
   const auto instances = placeInstances(42, tile256(), typicalDensity(), kAllSpecies);
   std::size_t bytes = 0;
   for (auto _ : state) {

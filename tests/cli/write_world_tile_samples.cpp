@@ -62,7 +62,7 @@ std::vector<double> reference(const construction::World& world, const tiling::Sa
   return h;
 }
 
-bool heightmaps(const app::TileService& service, const fs::path& dir, const tiling::TileId& tile,
+bool heightmaps(const app::TileService& service, const fs::path& dir, const geometry::TileId& tile,
                 const std::string& name) {
   const tiling::SampleGrid grid =
       service.scheme(tiling::SchemeKind::kWebMercator).rasterGrid(tile, 64);
@@ -87,7 +87,7 @@ bool heightmaps(const app::TileService& service, const fs::path& dir, const tili
   return true;
 }
 
-bool meshes(const app::TileService& service, const fs::path& dir, const tiling::TileId& tile,
+bool meshes(const app::TileService& service, const fs::path& dir, const geometry::TileId& tile,
             const std::string& name) {
   const int quads = 32;
   const tiling::TileScheme& scheme = service.scheme(tiling::SchemeKind::kLocal);
@@ -119,7 +119,7 @@ bool meshes(const app::TileService& service, const fs::path& dir, const tiling::
 /// evaluator's heights at its bordered samples; `east` names its east neighbour's sample, if
 /// written, for the seam check.
 bool relief(const app::TileService& service, const fs::path& dir, tiling::SchemeKind scheme,
-            const tiling::TileId& tile, int size, const std::string& name,
+            const geometry::TileId& tile, int size, const std::string& name,
             const std::string& east = "") {
   const tiling::SampleGrid grid = service.scheme(scheme).borderedRasterGrid(tile, size);
   const image::RgbImage expected =
@@ -138,7 +138,7 @@ bool relief(const app::TileService& service, const fs::path& dir, tiling::Scheme
 /// A vector tile and the world's river sections of the orders it shows, in degrees, at full
 /// resolution (render::forEachRiverSection's lines), for check_mvt.mjs to place the tile's
 /// rivers by its own Web Mercator.
-bool vector(const app::TileService& service, const fs::path& dir, const tiling::TileId& tile,
+bool vector(const app::TileService& service, const fs::path& dir, const geometry::TileId& tile,
             const std::string& name) {
   auto rendered =
       service.render({tiling::SchemeKind::kWebMercator, tile, app::TileFormat::kMvt, {}, {}});
@@ -209,7 +209,7 @@ bool encoderSample(const fs::path& dir) {
 /// from the whole-world evaluator's heights at the same bordered samples, as the tile encodes
 /// them; `east` names the tile's east neighbour's sample, if written, for the seam check.
 bool layerTiles(const app::TileService& service, const fs::path& dir, tiling::SchemeKind scheme,
-                const tiling::TileId& tile, int size, const std::string& name,
+                const geometry::TileId& tile, int size, const std::string& name,
                 const std::string& east = "") {
   const int border = layers::SkyView::kReach + 1; // the renderer's, for the sky view of even tiles
   const tiling::SampleGrid grid = service.scheme(scheme).borderedRasterGrid(tile, size, border);

@@ -9,7 +9,7 @@ namespace strahler::test_support {
 
 /// The Web Mercator (XYZ) tile at zoom z that holds (lon, lat), in degrees. Header-only: only
 /// tests that link the tiling library include it.
-inline tiling::TileId webTileAt(double lon, double lat, int z) {
+inline geometry::TileId webTileAt(double lon, double lat, int z) {
   const double n = std::ldexp(1.0, z);
   const double latRad = lat * M_PI / 180.0;
   return {z, static_cast<std::int64_t>((lon + 180.0) / 360.0 * n),

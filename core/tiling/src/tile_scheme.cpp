@@ -63,7 +63,7 @@ TileScheme TileScheme::localFor(const geometry::Aabb& landBounds) {
   return local(landBounds.center(), 1.1 * std::max({size.x, size.y, 1.0}));
 }
 
-bool TileScheme::contains(const TileId& t) const noexcept {
+bool TileScheme::contains(const geometry::TileId& t) const noexcept {
   if (t.z < 0 || t.z > maxZoom_)
     return false;
   const std::int64_t n = std::int64_t{1} << t.z;
@@ -71,21 +71,21 @@ bool TileScheme::contains(const TileId& t) const noexcept {
   return t.x >= 0 && t.y >= 0 && t.x < columns && t.y < n;
 }
 
-geometry::Aabb TileScheme::geographicBounds(const TileId& t) const noexcept {
+geometry::Aabb TileScheme::geographicBounds(const geometry::TileId& t) const noexcept {
   const double side = 180.0 / static_cast<double>(std::int64_t{1} << t.z);
   const Vec2 northWest{-180.0 + static_cast<double>(t.x) * side,
                        90.0 - static_cast<double>(t.y) * side};
   return {{northWest.x, northWest.y - side}, {northWest.x + side, northWest.y}};
 }
 
-geometry::Aabb TileScheme::localBounds(const TileId& t) const noexcept {
+geometry::Aabb TileScheme::localBounds(const geometry::TileId& t) const noexcept {
   const double side = rootSide_ / static_cast<double>(std::int64_t{1} << t.z);
   const Vec2 west{center_.x - 0.5 * rootSide_ + static_cast<double>(t.x) * side,
                   center_.y + 0.5 * rootSide_ - static_cast<double>(t.y + 1) * side};
   return {west, west + Vec2{side, side}};
 }
 
-SampleGrid TileScheme::rasterGrid(const TileId& tile, int size) const {
+SampleGrid TileScheme::rasterGrid(const geometry::TileId& tile, int size) const {
   switch (kind_) {
   case SchemeKind::kLocal:
     return localGrid(tile, size, size, 0.5, true);
@@ -97,11 +97,12 @@ SampleGrid TileScheme::rasterGrid(const TileId& tile, int size) const {
   return webGrid(tile, size, size, 0.5, true);
 }
 
-SampleGrid TileScheme::borderedRasterGrid(const TileId& tile, int size) const {
+SampleGrid TileScheme::borderedRasterGrid(const geometry::TileId& tile, int size) const {
   return borderedRasterGrid(tile, size, 1);
 }
 
-SampleGrid TileScheme::borderedRasterGrid(const TileId& tile, int size, int border) const {
+SampleGrid TileScheme::borderedRasterGrid(const geometry::TileId& tile, int size,
+                                          int border) const {
   // Global index tile·size + k + 0.5 − border is exact in double, as tile·size + k + 0.5 is.
   const double first = 0.5 - border;
   const int count = size + 2 * border;
@@ -109,7 +110,7 @@ SampleGrid TileScheme::borderedRasterGrid(const TileId& tile, int size, int bord
                                      : webGrid(tile, size, count, first, true);
 }
 
-SampleGrid TileScheme::meshGrid(const TileId& tile, int quads) const {
+SampleGrid TileScheme::meshGrid(const geometry::TileId& tile, int quads) const {
   switch (kind_) {
   case SchemeKind::kLocal:
     return localGrid(tile, quads, quads + 3, -1.0, false);
@@ -121,7 +122,7 @@ SampleGrid TileScheme::meshGrid(const TileId& tile, int quads) const {
   return webGrid(tile, quads, quads + 3, -1.0, false);
 }
 
-std::pair<Vec2, double> TileScheme::meshFrame(const TileId& tile, int quads) const {
+std::pair<Vec2, double> TileScheme::meshFrame(const geometry::TileId& tile, int quads) const {
   if (kind_ == SchemeKind::kGeographic) {
     const geometry::Aabb box = geographicBounds(tile);
     return {box.min, box.size().x / quads};
@@ -136,7 +137,7 @@ std::pair<Vec2, double> TileScheme::meshFrame(const TileId& tile, int quads) con
           side / quads};
 }
 
-SampleGrid TileScheme::localGrid(const TileId& tile, int n, int count, double first,
+SampleGrid TileScheme::localGrid(const geometry::TileId& tile, int n, int count, double first,
                                  bool northFirst) const {
   const double step = rootSide_ / (static_cast<double>(std::int64_t{1} << tile.z) * n);
   const Vec2 west{center_.x - 0.5 * rootSide_, center_.y + 0.5 * rootSide_}; // north-west corner
@@ -158,7 +159,7 @@ SampleGrid TileScheme::localGrid(const TileId& tile, int n, int count, double fi
   return g;
 }
 
-SampleGrid TileScheme::webGrid(const TileId& tile, int n, int count, double first,
+SampleGrid TileScheme::webGrid(const geometry::TileId& tile, int n, int count, double first,
                                bool northFirst) const {
   const double step = 2.0 * kWebExtent / (static_cast<double>(std::int64_t{1} << tile.z) * n);
   std::vector<double> lons = axis(tile.x, n, count, first, step);
@@ -183,7 +184,7 @@ SampleGrid TileScheme::webGrid(const TileId& tile, int n, int count, double firs
   return g;
 }
 
-SampleGrid TileScheme::geographicGrid(const TileId& tile, int n, int count, double first,
+SampleGrid TileScheme::geographicGrid(const geometry::TileId& tile, int n, int count, double first,
                                       bool northFirst) const {
   // Degrees per sample; lon = −180 + global column · step, lat = 90 − global row · step, from
   // global indices so that neighbouring tiles compute their shared samples identically.

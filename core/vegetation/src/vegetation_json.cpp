@@ -23,7 +23,8 @@ void appendInteger(std::string& out, std::int64_t value) {
 
 } // namespace
 
-std::string writeVegetationJson(const WebTile& tile, const geometry::LocalProjection& projection,
+std::string writeVegetationJson(const geometry::TileId& tile,
+                                const geometry::LocalProjection& projection,
                                 std::span<const Instance> instances,
                                 std::span<const double> heights) {
   STRAHLER_ASSERT(heights.empty() || heights.size() == instances.size(),

@@ -11,14 +11,15 @@ namespace strahler::vegetation {
 
 using geometry::Vec2;
 
-Vec2 tileCoordinates(const WebTile& tile, Vec2 lonLat) noexcept {
+Vec2 tileCoordinates(const geometry::TileId& tile, Vec2 lonLat) noexcept {
   const Vec2 m = geometry::webMercatorUnit(lonLat);
   // ldexp scales by 2^z exactly, so a point's tile at zoom z + 1 is a child of its tile at z.
   return {std::ldexp(m.x, tile.z) - static_cast<double>(tile.x),
           std::ldexp(m.y, tile.z) - static_cast<double>(tile.y)};
 }
 
-Footprint webTileFootprint(const geometry::LocalProjection& projection, const WebTile& tile) {
+Footprint webTileFootprint(const geometry::LocalProjection& projection,
+                           const geometry::TileId& tile) {
   // The tile's outline through the projection; its edges bend by far less than the margin
   // between 16 samples each (the curvature radius is thousands of kilometres).
   constexpr int kEdgeSamples = 16;
@@ -41,7 +42,8 @@ Footprint webTileFootprint(const geometry::LocalProjection& projection, const We
 
 base::Result<std::vector<Instance>> placeWebTile(std::uint64_t seed,
                                                  const geometry::LocalProjection& projection,
-                                                 const WebTile& tile, const DensityField& density) {
+                                                 const geometry::TileId& tile,
+                                                 const DensityField& density) {
   const SpeciesMask mask = visibleSpecies(tile.z);
   if (mask == 0)
     return base::makeError(base::ErrorCode::kOutOfRange,

@@ -239,7 +239,7 @@ TEST(Folds, TilesEqualTheWholeWorldOnAnyThreadCount) {
   for (const int z : {10, 12, 14}) {
     std::vector<tiling::SampleGrid> grids;
     for (int d = 0; d < 3; ++d) {
-      tiling::TileId tile = test_support::webTileAt(oro.lon, oro.lat, z);
+      geometry::TileId tile = test_support::webTileAt(oro.lon, oro.lat, z);
       tile.x += d - 1;
       grids.push_back(z == 12 ? webScheme().meshGrid(tile, 64) : webScheme().rasterGrid(tile, 96));
     }
@@ -299,8 +299,8 @@ TEST(Folds, NeighbouringTilesShareTheirEdges) {
   const Peak& rotondo = kPeaks[1];
   const int n = 32, w = n + 3;
   for (const int z : {10, 12, 14}) {
-    const tiling::TileId a = test_support::webTileAt(rotondo.lon, rotondo.lat, z);
-    const tiling::TileId east{a.z, a.x + 1, a.y};
+    const geometry::TileId a = test_support::webTileAt(rotondo.lon, rotondo.lat, z);
+    const geometry::TileId east{a.z, a.x + 1, a.y};
     const std::vector<double> ha = evaluator.evaluate(webScheme().meshGrid(a, n));
     const std::vector<double> he = evaluator.evaluate(webScheme().meshGrid(east, n));
     for (int j = 0; j < w; ++j)

@@ -44,8 +44,9 @@ TEST(TileEvaluator, RestrictedEvaluationEqualsTheWholeWorld) {
     const bool web = t % 2 == 1;
     const int z = web ? 9 + static_cast<int>(rng.below(6)) : 1 + static_cast<int>(rng.below(6));
     const TileScheme scheme = web ? webScheme() : local;
-    TileId tile = web ? webTileAt(c.x + rng.uniform(-0.3, 0.3), c.y + rng.uniform(-0.15, 0.15), z)
-                      : TileId{z, rng.below(1u << z), rng.below(1u << z)};
+    geometry::TileId tile =
+        web ? webTileAt(c.x + rng.uniform(-0.3, 0.3), c.y + rng.uniform(-0.15, 0.15), z)
+            : geometry::TileId{z, rng.below(1u << z), rng.below(1u << z)};
     const SampleGrid grid = t % 3 == 0 ? scheme.meshGrid(tile, 16) : scheme.rasterGrid(tile, 32);
     TileStats stats;
     const std::vector<double> fast = evaluator.evaluate(grid, &stats);
@@ -70,7 +71,7 @@ TEST(TileEvaluator, TributaryTilesEqualTheWholeWorld) {
   const Vec2 c = world.data().projectionCenter;
   std::size_t compared = 0, carved = 0;
   for (const int z : {12, 14, 16}) {
-    const TileId tile = webTileAt(c.x, c.y, z);
+    const geometry::TileId tile = webTileAt(c.x, c.y, z);
     const SampleGrid grid =
         z == 14 ? webScheme().meshGrid(tile, 32) : webScheme().rasterGrid(tile, 64);
     const std::vector<double> fast = evaluator.evaluate(grid);
@@ -117,7 +118,7 @@ TEST(TileEvaluator, CoastalTilesEqualTheWholeWorld) {
   for (int z : {8, 9, 10, 11}) {
     int land = 0, shelf = 0, mixedTiles = 0;
     for (int dx = 0; dx < 4; ++dx) {
-      TileId tile = webTileAt(c.x, c.y, z);
+      geometry::TileId tile = webTileAt(c.x, c.y, z);
       tile.x += dx * (1 << (z - 8)); // eastwards from the centre, into the sea
       const SampleGrid grid = webScheme().rasterGrid(tile, 256);
       const std::vector<double> fast = evaluator.evaluate(grid);
@@ -169,7 +170,8 @@ TEST(TileEvaluator, SmallTilesGatherFewPrimitives) {
 TEST(TileEvaluator, SeaAndOutsideTilesAreValidDepths) {
   const TileEvaluator evaluator(islandWorld());
   const TileScheme web = webScheme();
-  for (const TileId tile : {TileId{0, 0, 0}, TileId{8, 0, 0}, TileId{12, 100, 3000}}) {
+  for (const geometry::TileId tile :
+       {geometry::TileId{0, 0, 0}, geometry::TileId{8, 0, 0}, geometry::TileId{12, 100, 3000}}) {
     const SampleGrid grid = web.rasterGrid(tile, 16);
     for (double h : evaluator.evaluate(grid)) {
       ASSERT_TRUE(std::isfinite(h));
@@ -186,7 +188,7 @@ TEST(TileEvaluator, MeshNeighboursShareEdgeHeightsBitForBit) {
   const TileEvaluator evaluator(islandWorld());
   const TileScheme s = localScheme();
   const int z = 6, n = 32, w = n + 3;
-  const TileId a{z, 30, 31}, east{z, 31, 31};
+  const geometry::TileId a{z, 30, 31}, east{z, 31, 31};
   const std::vector<double> ha = evaluator.evaluate(s.meshGrid(a, n));
   const std::vector<double> he = evaluator.evaluate(s.meshGrid(east, n));
   for (int j = 0; j < w; ++j)
@@ -197,7 +199,7 @@ TEST(TileEvaluator, ParentAndChildrenAgreeWithinTheFadedOctaves) {
   const TileEvaluator evaluator(islandWorld());
   const TileScheme s = localScheme();
   const int z = 5, n = 16;
-  const TileId parent{z, 15, 16};
+  const geometry::TileId parent{z, 15, 16};
   const std::vector<double> hp = evaluator.evaluate(s.meshGrid(parent, n));
   const std::vector<double> hc = evaluator.evaluate(s.meshGrid({z + 1, 30, 33}, n)); // its SW child
   // The child's vertex (2i, 2j) is the parent's vertex (i, j): same point, finer spacing.
@@ -215,11 +217,11 @@ TEST(TileEvaluator, ParentAndChildrenAgreeWithinTheFadedOctaves) {
 TEST(TileEvaluator, SameTilesOnAnyThreadCount) {
   const TileEvaluator evaluator(islandWorld());
   const TileScheme s = localScheme();
-  std::vector<TileId> tiles;
+  std::vector<geometry::TileId> tiles;
   for (int i = 0; i < 8; ++i)
     tiles.push_back({5, 12 + i, 14 + i % 3});
   std::vector<std::vector<double>> sequential;
-  for (const TileId& t : tiles)
+  for (const geometry::TileId& t : tiles)
     sequential.push_back(evaluator.evaluate(s.rasterGrid(t, 32)));
   std::vector<std::vector<double>> parallel(tiles.size());
   std::vector<std::thread> threads;

@@ -100,7 +100,7 @@ TEST(TileScheme, BorderedRasterGridsHoldTheTileAndItsNeighboursEdgePixels) {
 TEST(TileScheme, WebSamplesMatchTheProjectionOfTheirLonLat) {
   const geometry::LocalProjection projection(2.95, 39.6);
   const TileScheme s = TileScheme::webMercator(projection);
-  const TileId tile{10, 520, 391};
+  const geometry::TileId tile{10, 520, 391};
   const SampleGrid g = s.rasterGrid(tile, 8);
   const double n = std::ldexp(1.0, tile.z);
   for (int j = 0; j < 8; ++j)
@@ -145,7 +145,7 @@ TEST(TileScheme, GeographicMeshGridsShareTheirEdgeSamplesWithTheirNeighbours) {
   const geometry::LocalProjection projection(2.9, 39.6);
   const TileScheme geo = TileScheme::geographic(projection);
   const int quads = 16, n = quads + 3;
-  const TileId a{12, 4129, 1133}, east{12, 4130, 1133}, north{12, 4129, 1132};
+  const geometry::TileId a{12, 4129, 1133}, east{12, 4130, 1133}, north{12, 4129, 1132};
   const SampleGrid ga = geo.meshGrid(a, quads), ge = geo.meshGrid(east, quads),
                    gn = geo.meshGrid(north, quads);
   ASSERT_EQ(ga.width, n);

@@ -10,8 +10,8 @@ namespace strahler::vegetation {
 namespace {
 
 /// The zoom-z tile holding the projection's centre.
-WebTile tileNear(const geometry::LocalProjection& projection, int z) {
-  const geometry::Vec2 c = tileCoordinates(WebTile{z, 0, 0}, projection.center());
+geometry::TileId tileNear(const geometry::LocalProjection& projection, int z) {
+  const geometry::Vec2 c = tileCoordinates(geometry::TileId{z, 0, 0}, projection.center());
   return {z, static_cast<std::int64_t>(std::floor(c.x)),
           static_cast<std::int64_t>(std::floor(c.y))};
 }
@@ -19,7 +19,7 @@ WebTile tileNear(const geometry::LocalProjection& projection, int z) {
 TEST(VegetationJson, WritesTheDocumentedFormat) {
   const geometry::LocalProjection projection(0.0, 0.0);
   // The tile z18 (131072, 131071) has its south-west corner at (0°, 0°), the local origin.
-  const WebTile tile{18, 131072, 131071};
+  const geometry::TileId tile{18, 131072, 131071};
   Instance inst;
   inst.position = {0.0, 0.0};
   inst.species = 1;
@@ -38,14 +38,14 @@ TEST(VegetationJson, WritesTheDocumentedFormat) {
 
 TEST(VegetationJson, EmptyTileHasAnEmptyList) {
   const std::string json =
-      writeVegetationJson(WebTile{17, 5, 6}, geometry::LocalProjection(10.0, 50.0), {});
+      writeVegetationJson(geometry::TileId{17, 5, 6}, geometry::LocalProjection(10.0, 50.0), {});
   EXPECT_NE(json.find("\"tile\":[17,5,6]"), std::string::npos);
   EXPECT_NE(json.find("\"instances\":[]}"), std::string::npos);
 }
 
 TEST(VegetationJson, ATilesJsonParsesAndPointsBackToItsInstances) {
   const geometry::LocalProjection projection(-21.9, 64.1);
-  const WebTile t = tileNear(projection, 17);
+  const geometry::TileId t = tileNear(projection, 17);
   const UniformDensity density({0.5f, 0.5f});
   const auto instances = placeWebTile(11, projection, t, density).value();
   ASSERT_GT(instances.size(), 100u);

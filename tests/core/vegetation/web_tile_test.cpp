@@ -13,14 +13,14 @@ using geometry::Vec2;
 /// A world centred in the Alps; tiles near its centre.
 const geometry::LocalProjection kProjection(7.5, 46.5);
 
-WebTile tileAt(Vec2 lonLat, int z) {
-  const Vec2 c = tileCoordinates(WebTile{z, 0, 0}, lonLat);
+geometry::TileId tileAt(Vec2 lonLat, int z) {
+  const Vec2 c = tileCoordinates(geometry::TileId{z, 0, 0}, lonLat);
   return {z, static_cast<std::int64_t>(std::floor(c.x)),
           static_cast<std::int64_t>(std::floor(c.y))};
 }
 
 TEST(VegetationWebTile, FootprintHoldsItsTileAndOwnsOnlyIt) {
-  const WebTile t = tileAt({7.51, 46.49}, 17);
+  const geometry::TileId t = tileAt({7.51, 46.49}, 17);
   const Footprint f = webTileFootprint(kProjection, t);
   const double n = std::ldexp(1.0, t.z);
   for (double a : {0.001, 0.5, 0.999})
@@ -37,7 +37,7 @@ TEST(VegetationWebTile, FootprintHoldsItsTileAndOwnsOnlyIt) {
       EXPECT_NEAR(c.x, a, 1e-6);
       EXPECT_NEAR(c.y, b, 1e-6);
     }
-  const Footprint east = webTileFootprint(kProjection, WebTile{t.z, t.x + 1, t.y});
+  const Footprint east = webTileFootprint(kProjection, geometry::TileId{t.z, t.x + 1, t.y});
   EXPECT_FALSE(east.contains(kProjection.forward(kProjection.inverse(f.bounds.center()))));
 }
 
@@ -45,12 +45,12 @@ TEST(VegetationWebTile, FourChildrenUnionEqualsTheirParent) {
   const FunctionDensity d([](std::size_t, Vec2 p) {
     return static_cast<float>(0.6 + 0.4 * std::sin(p.x / 29.0 + p.y / 41.0));
   });
-  const WebTile parent = tileAt({7.52, 46.51}, 16);
+  const geometry::TileId parent = tileAt({7.52, 46.51}, 16);
   const auto whole = placeInstances(7, webTileFootprint(kProjection, parent), d, kAllSpecies);
   std::vector<Instance> children;
   for (std::int64_t j = 0; j < 2; ++j)
     for (std::int64_t i = 0; i < 2; ++i) {
-      const WebTile c{17, parent.x * 2 + i, parent.y * 2 + j};
+      const geometry::TileId c{17, parent.x * 2 + i, parent.y * 2 + j};
       const auto part = placeInstances(7, webTileFootprint(kProjection, c), d, kAllSpecies);
       EXPECT_FALSE(part.empty());
       children.insert(children.end(), part.begin(), part.end());
@@ -63,7 +63,7 @@ TEST(VegetationWebTile, FourChildrenUnionEqualsTheirParent) {
 
 TEST(VegetationWebTile, PlaceWebTileServesOnlyVisibleZooms) {
   const UniformDensity d({0.5f, 0.5f});
-  const WebTile t17 = tileAt({7.5, 46.5}, 17);
+  const geometry::TileId t17 = tileAt({7.5, 46.5}, 17);
   const auto result = placeWebTile(3, kProjection, t17, d);
   ASSERT_TRUE(result.ok());
   EXPECT_TRUE(result.value() ==
@@ -74,8 +74,9 @@ TEST(VegetationWebTile, PlaceWebTileServesOnlyVisibleZooms) {
   ASSERT_FALSE(trees.value().empty());
   for (const Instance& i : trees.value())
     EXPECT_EQ(i.species, 0);
-  for (const WebTile bad : {tileAt({7.5, 46.5}, 15), tileAt({7.5, 46.5}, kMaxVegetationZoom + 1),
-                            WebTile{17, -1, 0}, WebTile{17, 0, std::int64_t{1} << 17}}) {
+  for (const geometry::TileId bad :
+       {tileAt({7.5, 46.5}, 15), tileAt({7.5, 46.5}, kMaxVegetationZoom + 1),
+        geometry::TileId{17, -1, 0}, geometry::TileId{17, 0, std::int64_t{1} << 17}}) {
     const auto r = placeWebTile(3, kProjection, bad, d);
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.error().code, base::ErrorCode::kOutOfRange);

@@ -3,20 +3,12 @@
 #include "strahler/base/result.h"
 #include "strahler/geometry/aabb.h"
 #include "strahler/geometry/projection.h"
+#include "strahler/geometry/tile_id.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace strahler::tiling {
-
-/// A quadtree tile: zoom z, column x (west to east), row y (north to south, as in XYZ).
-struct TileId {
-  int z = 0;
-  std::int64_t x = 0;
-  std::int64_t y = 0;
-
-  friend bool operator==(const TileId&, const TileId&) = default;
-};
 
 /// Where to sample a tile: points in the world's local frame, row-major.
 struct SampleGrid {
@@ -33,8 +25,8 @@ struct SampleGrid {
 enum class SchemeKind {
   kWebMercator, ///< EPSG:3857 XYZ tiles, for web maps.
   kLocal,       ///< A metric quadtree over the world's bounding square, for game clients.
-  /// EPSG:4326 tiles of 2 × 1 roots (Cesium's quantized-mesh pyramid); TileId rows still count
-  /// from the north (the TMS row of a URL is geometry::flipRow(z, y) = 2^z − 1 − y).
+  /// EPSG:4326 tiles of 2 × 1 roots (Cesium's quantized-mesh pyramid); geometry::TileId rows still
+  /// count from the north (the TMS row of a URL is geometry::flipRow(z, y) = 2^z − 1 − y).
   kGeographic,
 };
 
@@ -65,33 +57,35 @@ public:
   int maxZoom() const noexcept { return maxZoom_; }
   /// True when the tile exists in this pyramid (zoom in range, x and y in [0, 2^z); x in
   /// [0, 2^(z+1)) for kGeographic).
-  bool contains(const TileId& tile) const noexcept;
+  bool contains(const geometry::TileId& tile) const noexcept;
   /// The local square of a LocalQuad tile (kLocal only): its south-west corner and side, m.
-  geometry::Aabb localBounds(const TileId& tile) const noexcept;
+  geometry::Aabb localBounds(const geometry::TileId& tile) const noexcept;
 
   /// The longitude/latitude box of a kGeographic tile, degrees: min = (west, south).
-  geometry::Aabb geographicBounds(const TileId& tile) const noexcept;
+  geometry::Aabb geographicBounds(const geometry::TileId& tile) const noexcept;
   /// Pixel-centre samples of a `size`×`size` raster tile.
-  SampleGrid rasterGrid(const TileId& tile, int size) const;
+  SampleGrid rasterGrid(const geometry::TileId& tile, int size) const;
   /// rasterGrid() with a one-pixel border, (size+2)²: sample (i+1, j+1) is rasterGrid's (i, j)
   /// bit for bit, and the border holds the neighbouring tiles' edge pixels (for slopes).
-  SampleGrid borderedRasterGrid(const TileId& tile, int size) const;
+  SampleGrid borderedRasterGrid(const geometry::TileId& tile, int size) const;
   /// rasterGrid() with a border of `border` ≥ 1 pixels, (size + 2·border)²: sample
   /// (i + border, j + border) is rasterGrid's (i, j) bit for bit, the border the neighbouring
   /// tiles' pixels (for layers that look beyond the tile, such as the sky view). kLocal and
   /// kWebMercator only.
-  SampleGrid borderedRasterGrid(const TileId& tile, int size, int border) const;
+  SampleGrid borderedRasterGrid(const geometry::TileId& tile, int size, int border) const;
   /// Bordered vertex samples of a mesh tile with `quads`×`quads` quads.
-  SampleGrid meshGrid(const TileId& tile, int quads) const;
+  SampleGrid meshGrid(const geometry::TileId& tile, int quads) const;
   /// The mesh frame of a tile: south-west corner and vertex spacing, in the scheme's own
   /// metres (local metres for kLocal, EPSG:3857 metres for kWebMercator).
-  std::pair<geometry::Vec2, double> meshFrame(const TileId& tile, int quads) const;
+  std::pair<geometry::Vec2, double> meshFrame(const geometry::TileId& tile, int quads) const;
 
 private:
   // Samples k < count per axis at global index (tile · n + k + first), n samples per tile.
-  SampleGrid webGrid(const TileId& tile, int n, int count, double first, bool northFirst) const;
-  SampleGrid localGrid(const TileId& tile, int n, int count, double first, bool northFirst) const;
-  SampleGrid geographicGrid(const TileId& tile, int n, int count, double first,
+  SampleGrid webGrid(const geometry::TileId& tile, int n, int count, double first,
+                     bool northFirst) const;
+  SampleGrid localGrid(const geometry::TileId& tile, int n, int count, double first,
+                       bool northFirst) const;
+  SampleGrid geographicGrid(const geometry::TileId& tile, int n, int count, double first,
                             bool northFirst) const;
 
   SchemeKind kind_ = SchemeKind::kLocal;

@@ -15,7 +15,8 @@ namespace strahler::vegetation {
 /// (locale-independent), so the same instances always give the same bytes. With `heights`
 /// (one per instance, m), each instance also carries "e", "n" (its position in the world's
 /// local metres, east and north, as the local pyramid's tiles) and "h" (the ground height).
-std::string writeVegetationJson(const WebTile& tile, const geometry::LocalProjection& projection,
+std::string writeVegetationJson(const geometry::TileId& tile,
+                                const geometry::LocalProjection& projection,
                                 std::span<const Instance> instances,
                                 std::span<const double> heights = {});
 
