@@ -272,10 +272,11 @@ void TileServer::handleWorld(const ServedWorld& w, Endpoint endpoint, const Pars
 
 void TileServer::tile(const ServedWorld& w, const TileRequest& tile, const http::Request& request,
                       bool currentVersion, std::function<void(http::Response)> done) {
-  if (const base::Status inside = w.tiles->checkTile(tile); !inside) {
+  auto checked = w.tiles->checkTile(tile);
+  if (!checked) {
     // Refused before any work: labelled "error" in the metrics, as the router's refusals are.
     http::Response r = tileResponse(
-        {nullptr, renderStatus(inside.error().code), std::string(inside.error().message)});
+        {nullptr, renderStatus(checked.error().code), std::string(checked.error().message)});
     r.route = "error";
     return done(std::move(r));
   }
@@ -293,8 +294,10 @@ void TileServer::tile(const ServedWorld& w, const TileRequest& tile, const http:
   if (auto hit = cache_.find(key))
     return done(tileResponse({std::move(hit), service::TileStatus::kOk, {}}, currentVersion));
   const TileService* service = w.tiles.get();
-  auto compute = [this, service, tile, vary, etag = tileEtag(w.version, key)]() {
-    auto rendered = service->render(tile);
+  // The tile was checked once, above; the worker renders it without checking it again.
+  auto compute = [this, service, checked = std::move(checked).value(), vary,
+                  etag = tileEtag(w.version, key)]() {
+    auto rendered = service->render(checked);
     trimmer_.noteActivity();
     if (!rendered)
       return service::TileCache::Outcome{nullptr, renderStatus(rendered.error().code),

@@ -50,7 +50,7 @@ TileService::TileService(construction::WorldData world)
 
 TileService::~TileService() = default;
 
-base::Status TileService::checkTile(const TileRequest& request) const {
+base::Result<CheckedTile> TileService::checkTile(const TileRequest& request) const {
   if ((request.kind() == TileKind::kTerrain) != (request.scheme == tiling::SchemeKind::kGeographic))
     return base::makeError(base::ErrorCode::kInvalidInput,
                            "Cesium terrain tiles (.terrain) are served in the geographic pyramid "
@@ -65,11 +65,16 @@ base::Status TileService::checkTile(const TileRequest& request) const {
                            "tile " + std::to_string(t.z) + "/" + std::to_string(t.x) + "/" +
                                std::to_string(t.y) + " is outside the grid (zoom 0.." +
                                std::to_string(s.maxZoom()) + ")");
-  return base::Ok{};
+  return CheckedTile(request);
 }
 
 base::Result<RenderedTile> TileService::render(const TileRequest& request) const {
-  STRAHLER_RETURN_IF_ERROR(checkTile(request));
+  STRAHLER_ASSIGN_OR_RETURN(const CheckedTile tile, checkTile(request));
+  return render(tile);
+}
+
+base::Result<RenderedTile> TileService::render(const CheckedTile& tile) const {
+  const TileRequest& request = tile.request();
   const TileSizeRange range = tileSizeRange(request.kind());
   const int size = request.options.size == 0 ? range.defaultSize : request.options.size;
   if (size < range.min || size > range.max)

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <memory>
+#include <utility>
 
 namespace strahler::app {
 
@@ -18,6 +19,19 @@ namespace strahler::app {
 /// kUnsupported for a format this installation cannot make (its OpenImageIO module is
 /// missing), kFailed for the rest.
 service::TileStatus renderStatus(base::ErrorCode code) noexcept;
+
+/// A request that TileService::checkTile() has passed, and only it makes one: a tile checked
+/// on its way in is not checked again on its way to a renderer.
+class CheckedTile {
+public:
+  /// The request, in its pyramid and of a kind that pyramid serves.
+  const TileRequest& request() const noexcept { return request_; }
+
+private:
+  friend class TileService;
+  explicit CheckedTile(TileRequest request) : request_(std::move(request)) {}
+  TileRequest request_;
+};
 
 /// Makes tiles of one world: both pyramids, every kind of tile, each kind by its renderer.
 /// Knows nothing of the transport (the server, `strahler tile` and `strahler export` share it).
@@ -30,13 +44,16 @@ public:
   TileService(const TileService&) = delete;
   TileService& operator=(const TileService&) = delete;
 
-  /// kNotFound when the tile of `request` is outside its pyramid (the message says which zooms
-  /// it has), kInvalidInput for a kind its pyramid does not serve (Cesium terrain is only, and
-  /// only, in the geographic one; layer tiles are not in it); cheap, so a server can refuse such a
-  /// tile before queueing it.
-  base::Status checkTile(const TileRequest& request) const;
-  /// The tile, or kNotFound when it is outside the pyramid, kOutOfRange for a bad size, or the
-  /// renderer's error (renderStatus() says what each means).
+  /// `request` as a CheckedTile, or kNotFound when its tile is outside its pyramid (the
+  /// message says which zooms it has), kInvalidInput for a kind its pyramid does not serve
+  /// (Cesium terrain is only, and only, in the geographic one; layer tiles are not in it);
+  /// cheap, so a server can refuse such a tile before queueing it.
+  base::Result<CheckedTile> checkTile(const TileRequest& request) const;
+  /// The tile of a checked request, or kOutOfRange for a bad size, or the renderer's error
+  /// (renderStatus() says what each means).
+  base::Result<RenderedTile> render(const CheckedTile& tile) const;
+  /// checkTile(), then render(): for callers that check nothing before (`strahler tile`,
+  /// `strahler export`).
   base::Result<RenderedTile> render(const TileRequest& request) const;
 
   /// The evaluated world.
