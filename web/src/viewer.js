@@ -3,7 +3,7 @@
 // window.strahlerMap (the maplibregl.Map).
 import * as maplibregl from 'maplibre-gl';
 import { loadWorlds, rememberWorld } from './api.js';
-import { ROSGEN_COLOURS, TERRAIN_SOURCE, worldStyle } from './map-style.js';
+import { RIVER_TYPES, ROSGEN_COLOURS, TERRAIN_SOURCE, worldStyle } from './map-style.js';
 import { FeaturesOverlay } from './features-overlay.js';
 import { describePoint } from './point-info.js';
 import { archiveWorlds, pmtilesArchiveUrl } from './pmtiles-source.js';
@@ -14,11 +14,6 @@ import { LayerSwitcher } from './layer-switcher.js';
 const $ = (id) => document.getElementById(id);
 // The whole island in view beside the panel (250 px wide, 10 px from the left edge).
 const FIT = { padding: { top: 40, bottom: 40, right: 40, left: 300 }, duration: 0 };
-
-/** River types in plain words; the Rosgen letters stay in the details. */
-const RIVER_TYPES = {
-  B: 'mountain stream', E: 'meandering river', D: 'braided river', 'D-delta': 'delta channel',
-};
 
 function describeWorld(world) {
   const area = Number(world.areaKm2);
@@ -118,7 +113,8 @@ async function main() {
   });
 
   map.on('click', (e) => {
-    new maplibregl.Popup({ maxWidth: '280px' }).setLngLat(e.lngLat).setDOMContent(describePoint(map, e.point, e.lngLat)).addTo(map);
+    const info = describePoint(map, e.point, e.lngLat, { codes: $('details').open });
+    new maplibregl.Popup({ maxWidth: '280px' }).setLngLat(e.lngLat).setDOMContent(info).addTo(map);
   });
 }
 

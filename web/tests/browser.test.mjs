@@ -45,6 +45,9 @@ async function assertVersioned(responses, what) {
   }
 }
 
+// The popup's river line: the type in plain words (the legend's), then the Strahler order.
+const RIVER_IN_WORDS = /Nearest river: (mountain stream|meandering river|braided river|delta channel), Strahler order \d/;
+
 // Waits for window.strahlerMap, then until it is idle: style and every tile loaded, no transition.
 async function waitForIdleMap(page) {
   await page.waitForFunction(() => window.strahlerMap, null, { timeout: STEP_MS });
@@ -149,12 +152,13 @@ describe('map viewer', () => {
     await page.click('#details summary'); // collapsed again for the tests that follow
   });
 
-  test('click on a river: popup with elevation, Strahler order, flow, Rosgen type and width', async () => {
+  test('click on a river: popup with elevation, river type in plain words, order, flow and width', async () => {
     const text = await clickRiver(page, 320);
     assert.match(text, /Elevation ≈ -?\d+ m/);
-    assert.match(text, /Strahler order \d/);
-    assert.match(text, /Flow [\d.]+ m³\/s · Rosgen type (B|E|D|D-delta)/);
+    assert.match(text, RIVER_IN_WORDS);
+    assert.match(text, /Flow [\d.]+ m³\/s/);
     assert.match(text, /Channel \d+(–\d+)? m wide/);
+    assert.doesNotMatch(text, /Rosgen/, 'the Rosgen letters only with the details open');
   });
 
   test('draws a terrain that is not blank (screenshot)', async () => {
@@ -367,11 +371,16 @@ describe('map viewer layers, contours and rivers from the vector tiles (?rivers=
     assert.ok(state.orders.every(Number.isInteger), `rivers without an order: ${state.orders}`);
   });
 
-  test('click on a river of the vector tiles: popup with its order, flow, type and width', async () => {
+  test('click on a river of the vector tiles: popup with its type, order, flow and width; Rosgen type with the details open', async () => {
+    await page.click('#details summary');
     const text = await clickRiver(page, 300);
-    assert.match(text, /Strahler order \d/);
-    assert.match(text, /Flow [\d.]+ m³\/s · Rosgen type (B|E|D|D-delta)/);
+    await page.click('#details summary'); // collapsed again for the tests that follow
+    assert.match(text, RIVER_IN_WORDS);
+    assert.match(text, /Flow [\d.]+ m³\/s/);
     assert.match(text, /Channel \d+ m wide/);
+    const [, words] = RIVER_IN_WORDS.exec(text);
+    const letter = { 'mountain stream': 'B', 'meandering river': 'E', 'braided river': 'D', 'delta channel': 'D-delta' }[words];
+    assert.match(text, new RegExp(`Rosgen type ${letter}$`, 'm'));
     await page.evaluate(() => document.querySelectorAll('.maplibregl-popup').forEach((popup) => popup.remove()));
   });
 
