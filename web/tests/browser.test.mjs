@@ -119,6 +119,32 @@ describe('map viewer', () => {
     await assertVersioned(tiles, 'a heightmap tile');
   });
 
+  test('frames the whole island beside the panel at its default view', async () => {
+    // Opened without a hash, the page frames the world's land bounds (GET /worlds) under its
+    // pitch. The box's corners are its extremes on screen (its edges are straight lines over
+    // the sea): all four on the canvas, right of the panel, and the box fills the free width or
+    // height at least half-way (framed, not lost in the distance).
+    const [west, south, east, north] = (await (await fetch(`${server.url}/worlds`)).json())[0].bounds;
+    const view = await page.evaluate((corners) => {
+      const map = window.strahlerMap;
+      const canvas = map.getCanvas().getBoundingClientRect();
+      return {
+        corners: corners.map((c) => map.project(c)).map(({ x, y }) => [Math.round(x), Math.round(y)]),
+        free: { left: Math.max(canvas.left, document.getElementById('panel').getBoundingClientRect().right),
+          right: canvas.right, top: canvas.top, bottom: canvas.bottom },
+        hash: location.hash,
+      };
+    }, [[west, south], [east, south], [east, north], [west, north]]);
+    const { corners, free } = view;
+    for (const [x, y] of corners) {
+      assert.ok(x >= free.left && x <= free.right && y >= free.top && y <= free.bottom,
+        `the corner (${x}, ${y}) is not on the map beside the panel: ${JSON.stringify(view)}`);
+    }
+    const spread = (k) => Math.max(...corners.map((c) => c[k])) - Math.min(...corners.map((c) => c[k]));
+    assert.ok(spread(0) > 0.5 * (free.right - free.left) || spread(1) > 0.5 * (free.bottom - free.top),
+      `the island is small in the view: ${JSON.stringify(view)}`);
+  });
+
   test('has 3D terrain, colour relief, hillshade and the river layer', async () => {
     const state = await page.evaluate(() => {
       const map = window.strahlerMap;
