@@ -15,7 +15,9 @@ export function frameBounds(map, bounds, padding) {
   const corners = [[west, south], [east, south], [east, north], [west, north]];
   const { clientWidth: width, clientHeight: height } = map.getContainer();
   const target = { left: padding.left, right: width - padding.right, top: padding.top, bottom: height - padding.bottom };
-  map.jumpTo(map.cameraForBounds(bounds, { padding }));
+  const flat = map.cameraForBounds(bounds, { padding });
+  if (!flat) return; // the padding leaves no room (a very small window): MapLibre has warned
+  map.jumpTo(flat);
   for (let step = 0; step < STEPS; step += 1) {
     // The box's edges are straight lines on the ground, hence on screen: its corners bound it.
     const points = corners.map((c) => map.project(c));
