@@ -395,7 +395,7 @@ void setCurve(RiverPrimitive& r, const network::RiverNetwork& net, network::Node
 
 RiverPrimitive buildSection(const input::Params& params, const network::RiverNetwork& net,
                             const analysis::NetworkAnalysis& a, const geometry::PolygonIndex& land,
-                            network::NodeId id, Neighbours neighbours) {
+                            network::NodeId id, std::vector<Neighbours::Channel> neighbours) {
   const network::RiverNode& node = net.node(id);
   RiverPrimitive r = sectionHead(net, a, id);
 
@@ -441,7 +441,7 @@ RiverPrimitive buildSection(const input::Params& params, const network::RiverNet
         meanderWaves(r.type, 0.5 * (r.widthUp + r.widthDown), valley.length(), side, rule.calmStart,
                      rule.calmEnd, rng);
     points = fitCurve(valley, std::move(waves), node.position, parent.position, land, clearance,
-                      shift, rule, neighbours);
+                      shift, rule, {std::move(neighbours), 0.5 * std::max(r.widthUp, r.widthDown)});
   }
   keepClearOfShore(points, node.position, parent.position, land, clearance);
   setCurve(r, net, id, points);
@@ -553,18 +553,19 @@ std::vector<RiverPrimitive> generateRiverPrimitives(const input::Params& params,
   // clear of it, is built again clear of all of them.
   constexpr std::size_t kNotBuilt = ~std::size_t{0};
   std::vector<std::size_t> sectionOf(network.nodes.size(), kNotBuilt);
-  const auto neighboursOf = [&](network::NodeId id, double halfWidth) {
-    Neighbours n{{}, halfWidth};
+  const auto neighboursOf = [&](network::NodeId id) {
+    std::vector<Neighbours::Channel> channels;
     const network::RiverNode& node = network.node(id);
+    const auto add = [&](network::NodeId other, Vec2 meeting) {
+      if (other != id && sectionOf[other.index()] != kNotBuilt)
+        channels.push_back({&rivers[sectionOf[other.index()]], meeting});
+    };
     for (network::NodeId c : network.node(node.parent).children)
-      if (c != id && sectionOf[c.index()] != kNotBuilt)
-        n.channels.push_back({&rivers[sectionOf[c.index()]], network.node(node.parent).position});
+      add(c, network.node(node.parent).position);
     for (network::NodeId c : node.children)
-      if (sectionOf[c.index()] != kNotBuilt)
-        n.channels.push_back({&rivers[sectionOf[c.index()]], node.position});
-    if (const network::NodeId down = node.parent; sectionOf[down.index()] != kNotBuilt)
-      n.channels.push_back({&rivers[sectionOf[down.index()]], network.node(down).position});
-    return n;
+      add(c, node.position);
+    add(node.parent, network.node(node.parent).position);
+    return channels;
   };
   const auto drawnEdge = [&](network::NodeId id) {
     return chains.at.empty() ? std::nullopt : chains.edge(network, id);
@@ -577,9 +578,7 @@ std::vector<RiverPrimitive> generateRiverPrimitives(const input::Params& params,
     if (const auto drawn = drawnEdge(id)) {
       section = buildDrawnSection(network, analysis, id, *drawn->first, drawn->second);
     } else {
-      const RiverPrimitive head = sectionHead(network, analysis, id);
-      section = buildSection(params, network, analysis, land, id,
-                             neighboursOf(id, 0.5 * std::max(head.widthUp, head.widthDown)));
+      section = buildSection(params, network, analysis, land, id, neighboursOf(id));
     }
     sectionOf[i] = rivers.size();
     rivers.push_back(std::move(section));
@@ -589,11 +588,12 @@ std::vector<RiverPrimitive> generateRiverPrimitives(const input::Params& params,
     if (sectionOf[i] == kNotBuilt || drawnEdge(id))
       continue;
     RiverPrimitive& section = rivers[sectionOf[i]];
-    Neighbours neighbours = neighboursOf(id, 0.5 * std::max(section.widthUp, section.widthDown));
+    std::vector<Neighbours::Channel> neighbours = neighboursOf(id);
     std::vector<Vec2> points;
     for (const CurvePoint& q : section.curve)
       points.push_back(q.position);
-    if (!clearOfNeighbours(points, neighbours))
+    if (!clearOfNeighbours(points,
+                           {neighbours, 0.5 * std::max(section.widthUp, section.widthDown)}))
       section = buildSection(params, network, analysis, land, id, std::move(neighbours));
   }
   return rivers;
