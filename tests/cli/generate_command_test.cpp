@@ -342,7 +342,7 @@ TEST(WorldCommands, InfoRenderAndAnalyzeAWorldFile) {
   EXPECT_EQ(stats["bytes"].get<std::size_t>(), fs::file_size(world));
   EXPECT_LT(stats["bytesPerKm2"].get<double>(), 500.0);
   EXPECT_GT(stats["primitives"]["terrain"].get<int>(), 5000);
-  EXPECT_EQ(stats["generatorVersion"], "strahler-generator-8");
+  EXPECT_EQ(stats["generatorVersion"], "strahler-generator-9");
 
   const fs::path png = scratchDir() / "relief.png";
   const ProcessRun render = strahler("render " + world.string() + " --size 300 -o " + png.string());

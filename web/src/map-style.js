@@ -15,6 +15,11 @@ export const ROSGEN_COLOURS = {
   'D-delta': '#c2338a', // distributaries at the mouth
 };
 
+/** The Rosgen types in plain words, for legends and popups; the letters stay in the details. */
+export const RIVER_TYPES = {
+  B: 'mountain stream', E: 'meandering river', D: 'braided river', 'D-delta': 'delta channel',
+};
+
 // Hypsometric tint: sea floor in blues, then beach, lowland greens, browns, rock and snow.
 const RELIEF = [
   -400, '#0b3a5e', -40, '#1f6592', -0.5, '#5a9bc2', 0, '#d9cf9e', 20, '#a8c98a', 200, '#6fa35a',

@@ -1,5 +1,5 @@
 // What the viewer says about a clicked point: its elevation and the nearest river.
-import { RIVER_LAYER } from './map-style.js';
+import { RIVER_LAYER, RIVER_TYPES } from './map-style.js';
 
 const SEARCH_RADIUS_PX = 12;
 
@@ -39,8 +39,11 @@ export function elevationAt(map, lngLat) {
   return elevation === null || exaggeration === 0 ? null : elevation / exaggeration;
 }
 
-/** A DOM node for the popup: elevation, then the nearest river's order, flow, type and width. */
-export function describePoint(map, point, lngLat) {
+/**
+ * A DOM node for the popup: elevation, then the nearest river's type in plain words, order, flow
+ * and width. `codes` (the panel's details are open) adds the river's Rosgen type.
+ */
+export function describePoint(map, point, lngLat, { codes = false } = {}) {
   const lines = [];
   const elevation = elevationAt(map, lngLat);
   lines.push(elevation === null ? 'Elevation: unknown (no terrain)' : `Elevation ≈ ${elevation.toFixed(0)} m`);
@@ -48,14 +51,15 @@ export function describePoint(map, point, lngLat) {
   if (river) {
     // rivers.geojson: `strahler`, widths at both ends; vector tiles: `order`, `width` downstream.
     const { strahler, order, flow, rosgen, widthUpM, widthDownM, width } = river.properties;
-    lines.push(`Nearest river: Strahler order ${strahler ?? order}`);
-    lines.push(`Flow ${Number(flow).toFixed(flow < 10 ? 2 : 0)} m³/s · Rosgen type ${rosgen}`);
+    lines.push(`Nearest river: ${RIVER_TYPES[rosgen] ?? 'river'}, Strahler order ${strahler ?? order}`);
+    lines.push(`Flow ${Number(flow).toFixed(flow < 10 ? 2 : 0)} m³/s`);
     if (widthUpM !== undefined && widthDownM !== undefined) {
       const [up, down] = [widthUpM, widthDownM].map((w) => Number(w).toFixed(0));
       lines.push(`Channel ${up === down ? up : `${up}–${down}`} m wide`);
     } else if (width !== undefined) {
       lines.push(`Channel ${Number(width).toFixed(0)} m wide`);
     }
+    if (codes) lines.push(`Rosgen type ${rosgen}`);
   } else {
     lines.push(`No river within ${SEARCH_RADIUS_PX} px`);
   }

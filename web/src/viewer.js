@@ -3,8 +3,9 @@
 // window.strahlerMap (the maplibregl.Map).
 import * as maplibregl from 'maplibre-gl';
 import { loadWorlds, rememberWorld } from './api.js';
-import { ROSGEN_COLOURS, TERRAIN_SOURCE, worldStyle } from './map-style.js';
+import { RIVER_TYPES, ROSGEN_COLOURS, TERRAIN_SOURCE, worldStyle } from './map-style.js';
 import { FeaturesOverlay } from './features-overlay.js';
+import { frameBounds } from './framing.js';
 import { describePoint } from './point-info.js';
 import { archiveWorlds, pmtilesArchiveUrl } from './pmtiles-source.js';
 import { TileTimings, registerTimedProtocol, showTimings, timedUrl } from './tile-timing.js';
@@ -13,12 +14,7 @@ import { LayerSwitcher } from './layer-switcher.js';
 
 const $ = (id) => document.getElementById(id);
 // The whole island in view beside the panel (250 px wide, 10 px from the left edge).
-const FIT = { padding: { top: 40, bottom: 40, right: 40, left: 300 }, duration: 0 };
-
-/** River types in plain words; the Rosgen letters stay in the details. */
-const RIVER_TYPES = {
-  B: 'mountain stream', E: 'meandering river', D: 'braided river', 'D-delta': 'delta channel',
-};
+const PADDING = { top: 40, bottom: 40, right: 40, left: 300 };
 
 function describeWorld(world) {
   const area = Number(world.areaKm2);
@@ -69,15 +65,17 @@ async function main() {
   showLegend($('legend'), $('legend-codes'));
 
   const exaggeration = Number($('exaggeration').value);
+  // The camera lives in the URL (#zoom/lat/lon/bearing/pitch, with ?world=ID), so a view can be
+  // shared or bookmarked; a hash given on load wins over the world's bounds. (A hash that is
+  // not a camera leaves MapLibre's own fit of the bounds, which ignores the pitch.)
+  const cameraInUrl = location.hash.length > 1;
   const map = new maplibregl.Map({
     container: 'map',
     style: worldStyle(selected, exaggeration),
     bounds: selected.bounds,
-    fitBoundsOptions: FIT,
+    fitBoundsOptions: { padding: PADDING },
     pitch: 50,
     maxPitch: 80,
-    // The camera lives in the URL (#zoom/lat/lon/bearing/pitch, with ?world=ID), so a view can
-    // be shared or bookmarked; a hash given on load wins over the world's bounds.
     hash: true,
     // Keeps the last frame readable (screenshots, tests); no fade so "idle" means drawn.
     canvasContextAttributes: { preserveDrawingBuffer: true },
@@ -92,6 +90,7 @@ async function main() {
       return undefined;
     },
   });
+  if (!cameraInUrl) frameBounds(map, selected.bounds, PADDING);
   map.addControl(new maplibregl.NavigationControl({ visualizePitch: true }));
   map.addControl(new maplibregl.ScaleControl());
   window.strahlerMap = map;
@@ -111,14 +110,15 @@ async function main() {
   features.show(selected);
   setupWorldPicker(worlds, selected, (world) => {
     map.setStyle(worldStyle(world, currentExaggeration(), features.visible, switcher.state));
-    map.fitBounds(world.bounds, FIT);
+    frameBounds(map, world.bounds, PADDING);
     showWorld(world);
     features.show(world);
     switcher.show(world);
   });
 
   map.on('click', (e) => {
-    new maplibregl.Popup({ maxWidth: '280px' }).setLngLat(e.lngLat).setDOMContent(describePoint(map, e.point, e.lngLat)).addTo(map);
+    const info = describePoint(map, e.point, e.lngLat, { codes: $('details').open });
+    new maplibregl.Popup({ maxWidth: '280px' }).setLngLat(e.lngLat).setDOMContent(info).addTo(map);
   });
 }
 

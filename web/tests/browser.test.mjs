@@ -13,7 +13,7 @@ import { startServer } from './lib/server.mjs';
 import { startStaticServer } from './lib/static-server.mjs';
 
 const SCREENSHOTS = join(dirname(fileURLToPath(import.meta.url)), 'screenshots');
-const TOTAL_MS = 420_000; // the whole file, server start to browser close: ~3.7 min at load 6 on 2 cores
+const TOTAL_MS = 420_000; // the whole file, server start to browser close: ~4.6 min at load 5 on 2 cores
 const STEP_MS = 60_000;   // any one wait in a page
 
 // A blank or single-colour canvas has a luminance spread near 0 and a handful of colours.
@@ -44,6 +44,9 @@ async function assertVersioned(responses, what) {
       `${what} without the world's version: ${r.url}`);
   }
 }
+
+// The popup's river line: the type in plain words (the legend's), then the Strahler order.
+const RIVER_IN_WORDS = /Nearest river: (mountain stream|meandering river|braided river|delta channel), Strahler order \d/;
 
 // Waits for window.strahlerMap, then until it is idle: style and every tile loaded, no transition.
 async function waitForIdleMap(page) {
@@ -116,6 +119,32 @@ describe('map viewer', () => {
     await assertVersioned(tiles, 'a heightmap tile');
   });
 
+  test('frames the whole island beside the panel at its default view', async () => {
+    // Opened without a hash, the page frames the world's land bounds (GET /worlds) under its
+    // pitch. The box's corners are its extremes on screen (its edges are straight lines over
+    // the sea): all four on the canvas, right of the panel, and the box fills the free width or
+    // height at least half-way (framed, not lost in the distance).
+    const [west, south, east, north] = (await (await fetch(`${server.url}/worlds`)).json())[0].bounds;
+    const view = await page.evaluate((corners) => {
+      const map = window.strahlerMap;
+      const canvas = map.getCanvas().getBoundingClientRect();
+      return {
+        corners: corners.map((c) => map.project(c)).map(({ x, y }) => [Math.round(x), Math.round(y)]),
+        free: { left: Math.max(canvas.left, document.getElementById('panel').getBoundingClientRect().right),
+          right: canvas.right, top: canvas.top, bottom: canvas.bottom },
+        hash: location.hash,
+      };
+    }, [[west, south], [east, south], [east, north], [west, north]]);
+    const { corners, free } = view;
+    for (const [x, y] of corners) {
+      assert.ok(x >= free.left && x <= free.right && y >= free.top && y <= free.bottom,
+        `the corner (${x}, ${y}) is not on the map beside the panel: ${JSON.stringify(view)}`);
+    }
+    const spread = (k) => Math.max(...corners.map((c) => c[k])) - Math.min(...corners.map((c) => c[k]));
+    assert.ok(spread(0) > 0.5 * (free.right - free.left) || spread(1) > 0.5 * (free.bottom - free.top),
+      `the island is small in the view: ${JSON.stringify(view)}`);
+  });
+
   test('has 3D terrain, colour relief, hillshade and the river layer', async () => {
     const state = await page.evaluate(() => {
       const map = window.strahlerMap;
@@ -149,12 +178,13 @@ describe('map viewer', () => {
     await page.click('#details summary'); // collapsed again for the tests that follow
   });
 
-  test('click on a river: popup with elevation, Strahler order, flow, Rosgen type and width', async () => {
+  test('click on a river: popup with elevation, river type in plain words, order, flow and width', async () => {
     const text = await clickRiver(page, 320);
     assert.match(text, /Elevation ≈ -?\d+ m/);
-    assert.match(text, /Strahler order \d/);
-    assert.match(text, /Flow [\d.]+ m³\/s · Rosgen type (B|E|D|D-delta)/);
+    assert.match(text, RIVER_IN_WORDS);
+    assert.match(text, /Flow [\d.]+ m³\/s/);
     assert.match(text, /Channel \d+(–\d+)? m wide/);
+    assert.doesNotMatch(text, /Rosgen/, 'the Rosgen letters only with the details open');
   });
 
   test('draws a terrain that is not blank (screenshot)', async () => {
@@ -367,11 +397,16 @@ describe('map viewer layers, contours and rivers from the vector tiles (?rivers=
     assert.ok(state.orders.every(Number.isInteger), `rivers without an order: ${state.orders}`);
   });
 
-  test('click on a river of the vector tiles: popup with its order, flow, type and width', async () => {
+  test('click on a river of the vector tiles: popup with its type, order, flow and width; Rosgen type with the details open', async () => {
+    await page.click('#details summary');
     const text = await clickRiver(page, 300);
-    assert.match(text, /Strahler order \d/);
-    assert.match(text, /Flow [\d.]+ m³\/s · Rosgen type (B|E|D|D-delta)/);
+    await page.click('#details summary'); // collapsed again for the tests that follow
+    assert.match(text, RIVER_IN_WORDS);
+    assert.match(text, /Flow [\d.]+ m³\/s/);
     assert.match(text, /Channel \d+ m wide/);
+    const [, words] = RIVER_IN_WORDS.exec(text);
+    const letter = { 'mountain stream': 'B', 'meandering river': 'E', 'braided river': 'D', 'delta channel': 'D-delta' }[words];
+    assert.match(text, new RegExp(`Rosgen type ${letter}$`, 'm'));
     await page.evaluate(() => document.querySelectorAll('.maplibregl-popup').forEach((popup) => popup.remove()));
   });
 
@@ -527,21 +562,32 @@ describe('game client vegetation', () => {
     });
     assert.ok(spots.length > 0, 'no low land found on the terrain');
     let stats;
-    for (const [x, h, z] of spots.slice(0, 6)) {
-      // Wait for a dozen frames at the new position (update() has seen it with the ground under
-      // it, sampled every ten frames) and every vegetation tile it wants loaded: waiting for the
-      // first answers alone raced the later requests (trees missed one run in three).
-      const frame = await page.evaluate(([x, h, z]) => {
+    // Wait for a dozen frames at a new position (update() has seen it with the ground under it,
+    // sampled every ten frames) and every vegetation tile it wants loaded: waiting for the first
+    // answers alone raced the later requests (trees missed one run in three).
+    const settleAt = async (x, y, z) => {
+      const frame = await page.evaluate(([x, y, z]) => {
         const { camera, frames } = window.strahlerGame;
-        camera.position.set(x, h + 25, z);
+        camera.position.set(x, y, z);
         camera.rotation.set(-0.15, 0.4, 0, 'YXZ');
         return frames;
-      }, [x, h, z]);
+      }, [x, y, z]);
       await page.waitForFunction((frame) => {
         const g = window.strahlerGame;
         return g.frames > frame + 12 && g.vegetation.settled && g.vegetation.stats.requested > 0 &&
           g.vegetation.inFlight === 0 && g.stats.inFlight === 0;
       }, frame, { timeout: STEP_MS, polling: 200 });
+    };
+    for (const [x, h, z] of spots.slice(0, 6)) {
+      await settleAt(x, h + 25, z);
+      // The finer tiles loaded there may raise the ground by tens of metres (the camera then
+      // stood among the trunks): 25 m above the ground as loaded now, until it holds.
+      for (let again = 0; again < 3; again += 1) {
+        const ground = await page.evaluate(([x, z]) => window.strahlerGame.groundAt(x, z), [x, z]);
+        const y = await page.evaluate(() => window.strahlerGame.camera.position.y);
+        if (ground === null || Math.abs(ground + 25 - y) < 5) break;
+        await settleAt(x, ground + 25, z);
+      }
       stats = await vegetation();
       if (stats.tree > 0 && stats.bush > 0) break;
     }

@@ -1,6 +1,7 @@
 #include "strahler/primitives/river_primitives.h"
 
 #include "strahler/base/random.h"
+#include "strahler/geometry/aabb.h"
 #include "strahler/geometry/distance.h"
 #include "strahler/network/drawn_rivers.h"
 #include "strahler/primitives/meander_curve.h"
@@ -245,31 +246,93 @@ constexpr double kMirroredCalm = 0.3;
 /// cut at 20° (CurveSampling), so more means the valley's bend folded the meander over itself.
 constexpr double kMostTurn = 28.0 * kPi / 180.0;
 
-/// Whether `points` turn by at most kMostTurn from one segment to the next, and keep clear of
-/// the shore as keepClearOfShore asks.
+/// Room kept between a section's channel and a neighbouring channel beyond their half-widths,
+/// m: a channel inside another's floor takes the lower of the two beds there, and the other bed
+/// is another water level (Mallorca's two sources 80 m apart, one meandering across the other's
+/// straight course to their mouth: 136 samples rising up to 1.9 m). 10 m also holds at zoom 14,
+/// whose floors are 7 m wide (riverFloor).
+constexpr double kChannelGap = 10.0;
+/// Near the node two channels share they meet: within this many gaps of it, no check.
+constexpr double kChannelMeeting = 3.0;
+
+/// The channels a section's curve keeps clear of: its siblings (the other sections ending at
+/// its downstream node), its upstream node's inflows and the section leaving its downstream
+/// node, each with the node where they meet.
+struct Neighbours {
+  struct Channel {
+    const RiverPrimitive* section; ///< Its curve is set.
+    Vec2 meeting;                  ///< The node both channels touch.
+  };
+  std::vector<Channel> channels;
+  double halfWidth = 0.0; ///< The section's own widest half-width, m.
+};
+
+/// Whether the channel `points` keeps kChannelGap beyond both half-widths from every
+/// neighbouring channel, except within kChannelMeeting gaps of the node where they meet.
+bool clearOfNeighbours(const std::vector<Vec2>& points, const Neighbours& neighbours) {
+  for (const Neighbours::Channel& other : neighbours.channels) {
+    const double gap = neighbours.halfWidth +
+                       0.5 * std::max(other.section->widthUp, other.section->widthDown) +
+                       kChannelGap;
+    const double meeting = kChannelMeeting * gap;
+    const std::vector<CurvePoint>& curve = other.section->curve;
+    // The other curve in runs of kRun segments, each run's box grown by the gap: a segment
+    // of ours outside a run's box is farther than the gap from all of its segments.
+    constexpr std::size_t kRun = 8;
+    std::vector<geometry::Aabb> runs;
+    for (std::size_t k = 0; k + 1 < curve.size(); k += kRun) {
+      geometry::Aabb box;
+      for (std::size_t j = k; j < std::min(k + kRun + 1, curve.size()); ++j)
+        box.add(curve[j].position);
+      runs.push_back(box.expanded(gap));
+    }
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+      if (distance(points[i], other.meeting) < meeting ||
+          distance(points[i + 1], other.meeting) < meeting)
+        continue;
+      geometry::Aabb segment;
+      segment.add(points[i]);
+      segment.add(points[i + 1]);
+      for (std::size_t run = 0; run < runs.size(); ++run) {
+        if (!runs[run].intersects(segment))
+          continue;
+        for (std::size_t k = run * kRun; k < std::min((run + 1) * kRun, curve.size() - 1); ++k)
+          if (geometry::segmentSegmentDistance(points[i], points[i + 1], curve[k].position,
+                                               curve[k + 1].position) < gap)
+            return false;
+      }
+    }
+  }
+  return true;
+}
+
+/// Whether `points` turn by at most kMostTurn from one segment to the next, keep clear of the
+/// shore as keepClearOfShore asks, and keep clear of the neighbouring channels.
 bool fits(const std::vector<Vec2>& points, Vec2 a, Vec2 b, const geometry::PolygonIndex& land,
-          double clearance) {
+          double clearance, const Neighbours& neighbours) {
   for (std::size_t i = 1; i + 1 < points.size(); ++i) {
     const Vec2 in = points[i] - points[i - 1], out = points[i + 1] - points[i];
     if (std::abs(std::atan2(cross(in, out), dot(in, out))) > kMostTurn)
       return false;
   }
-  return clearOfShore(points, a, b, land, clearance);
+  return clearOfShore(points, a, b, land, clearance) && clearOfNeighbours(points, neighbours);
 }
 
 /// The curve of `waves` along `valley` (from a to b) where it fits (bends smoothly, keeps clear
-/// of the shore), or else the first that fits of: the waves mirrored to the valley's other
-/// side (a belt on the inside of a tight valley bend folds), then both sides with half and a
-/// quarter of the deflection (where `side` kept the belt away from the other river at a
-/// confluence, the mirrored wave next to that confluence calmed to kMirroredCalm more), the valley
-/// path alone, with arms of half and a quarter of their length (nearer the chord, still leaving and
-/// arriving along the nodes' tangents), and last the straight chord (without `shift`, the
-/// wandering). Pulling single points back toward the chord instead made corners of up to 54°.
+/// of the shore and of the neighbouring channels), or else the first that fits of: the waves
+/// mirrored to the valley's other side (a belt on the inside of a tight valley bend folds), then
+/// both sides with half and a quarter of the deflection (where `side` kept the belt away from the
+/// other river at a confluence, the mirrored wave next to that confluence calmed to kMirroredCalm
+/// more), the valley path alone, with arms of half and a quarter of their length (nearer the chord,
+/// still leaving and arriving along the nodes' tangents), and last the straight chord (without
+/// `shift`, the wandering). Pulling single points back toward the chord instead made corners of up
+/// to 54°.
 std::vector<Vec2> fitCurve(const ValleyPath& valley, std::vector<MeanderWave> waves, Vec2 a, Vec2 b,
                            const geometry::PolygonIndex& land, double clearance,
-                           const std::function<double(double)>& shift, SideRule side) {
+                           const std::function<double(double)>& shift, SideRule side,
+                           const Neighbours& neighbours) {
   std::vector<Vec2> points = meanderCurve(valley, waves, {}, shift);
-  if (fits(points, a, b, land, clearance))
+  if (fits(points, a, b, land, clearance, neighbours))
     return points;
   bool mirrored = false;
   for (const double scale : {-1.0, -0.5, -1.0, -0.5, -1.0}) {
@@ -286,12 +349,12 @@ std::vector<Vec2> fitCurve(const ValleyPath& valley, std::vector<MeanderWave> wa
     }
     mirrored = true;
     points = meanderCurve(valley, waves, {}, shift);
-    if (fits(points, a, b, land, clearance))
+    if (fits(points, a, b, land, clearance, neighbours))
       return points;
   }
   for (const double arm : {1.0, 0.5, 0.25}) {
     points = meanderCurve(valley.withArms(arm), {}, {}, shift);
-    if (fits(points, a, b, land, clearance))
+    if (fits(points, a, b, land, clearance, neighbours))
       return points;
   }
   const Vec2 chord = normalize(b - a);
@@ -332,7 +395,7 @@ void setCurve(RiverPrimitive& r, const network::RiverNetwork& net, network::Node
 
 RiverPrimitive buildSection(const input::Params& params, const network::RiverNetwork& net,
                             const analysis::NetworkAnalysis& a, const geometry::PolygonIndex& land,
-                            network::NodeId id) {
+                            network::NodeId id, std::vector<Neighbours::Channel> neighbours) {
   const network::RiverNode& node = net.node(id);
   RiverPrimitive r = sectionHead(net, a, id);
 
@@ -378,7 +441,7 @@ RiverPrimitive buildSection(const input::Params& params, const network::RiverNet
         meanderWaves(r.type, 0.5 * (r.widthUp + r.widthDown), valley.length(), side, rule.calmStart,
                      rule.calmEnd, rng);
     points = fitCurve(valley, std::move(waves), node.position, parent.position, land, clearance,
-                      shift, rule);
+                      shift, rule, {std::move(neighbours), 0.5 * std::max(r.widthUp, r.widthDown)});
   }
   keepClearOfShore(points, node.position, parent.position, land, clearance);
   setCurve(r, net, id, points);
@@ -485,14 +548,53 @@ std::vector<RiverPrimitive> generateRiverPrimitives(const input::Params& params,
   const DrawnChains chains = drawnChains(params, land, features);
   std::vector<RiverPrimitive> rivers;
   rivers.reserve(network.edgeCount());
+  // Where each node's section is in `rivers`, once built: a section keeps clear of the
+  // neighbouring sections built before it, then, where one built after it could not keep
+  // clear of it, is built again clear of all of them.
+  constexpr std::size_t kNotBuilt = ~std::size_t{0};
+  std::vector<std::size_t> sectionOf(network.nodes.size(), kNotBuilt);
+  const auto neighboursOf = [&](network::NodeId id) {
+    std::vector<Neighbours::Channel> channels;
+    const network::RiverNode& node = network.node(id);
+    const auto add = [&](network::NodeId other, Vec2 meeting) {
+      if (other != id && sectionOf[other.index()] != kNotBuilt)
+        channels.push_back({&rivers[sectionOf[other.index()]], meeting});
+    };
+    for (network::NodeId c : network.node(node.parent).children)
+      add(c, network.node(node.parent).position);
+    for (network::NodeId c : node.children)
+      add(c, node.position);
+    add(node.parent, network.node(node.parent).position);
+    return channels;
+  };
+  const auto drawnEdge = [&](network::NodeId id) {
+    return chains.at.empty() ? std::nullopt : chains.edge(network, id);
+  };
   for (std::uint32_t i = 0; i < network.nodes.size(); ++i) {
     if (!network.nodes[i].parent.valid())
       continue;
     const network::NodeId id(i);
-    if (const auto drawn = chains.at.empty() ? std::nullopt : chains.edge(network, id))
-      rivers.push_back(buildDrawnSection(network, analysis, id, *drawn->first, drawn->second));
-    else
-      rivers.push_back(buildSection(params, network, analysis, land, id));
+    RiverPrimitive section;
+    if (const auto drawn = drawnEdge(id)) {
+      section = buildDrawnSection(network, analysis, id, *drawn->first, drawn->second);
+    } else {
+      section = buildSection(params, network, analysis, land, id, neighboursOf(id));
+    }
+    sectionOf[i] = rivers.size();
+    rivers.push_back(std::move(section));
+  }
+  for (std::uint32_t i = 0; i < network.nodes.size(); ++i) {
+    const network::NodeId id(i);
+    if (sectionOf[i] == kNotBuilt || drawnEdge(id))
+      continue;
+    RiverPrimitive& section = rivers[sectionOf[i]];
+    std::vector<Neighbours::Channel> neighbours = neighboursOf(id);
+    std::vector<Vec2> points;
+    for (const CurvePoint& q : section.curve)
+      points.push_back(q.position);
+    if (!clearOfNeighbours(points,
+                           {neighbours, 0.5 * std::max(section.widthUp, section.widthDown)}))
+      section = buildSection(params, network, analysis, land, id, std::move(neighbours));
   }
   return rivers;
 }

@@ -184,10 +184,7 @@ TEST(Tributaries, RiversWanderUnderThem) {
   EXPECT_GT(wanderingMean, plainMean + 20.0) << plainMean << " m against " << wanderingMean << " m";
 }
 
-// Disabled at generator 8: with sine-generated meanders on the canonical default island, 45 of
-// the samples rise, worst 2.74 m at (15200, 7797) (the experimental option's wander moves the
-// meandering path; issue 36 asks to remove the option once erosion supersedes it).
-TEST(Tributaries, DISABLED_RiversNeverRiseDownstream) {
+TEST(Tributaries, RiversNeverRiseDownstream) {
   // Neither the wandering curves (faded over a wavelength at the nodes, so a section does not
   // cross its parent's floor) nor the tributaries' valleys (never below the water beside
   // their parent) make a river's bed rise downstream.

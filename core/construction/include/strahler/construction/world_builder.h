@@ -21,7 +21,7 @@ namespace strahler::construction {
 /// 8: river curves are sine-generated meanders joined smoothly at the nodes (issue 36), and
 /// coastlines are canonical (either winding, any first vertex). Erosion at generation is opt-in
 /// through params (erosionSteps > 0, part of the canonical params and so of the cache key).
-inline constexpr const char* kGeneratorVersion = "strahler-generator-8";
+inline constexpr const char* kGeneratorVersion = "strahler-generator-9";
 
 /// Runs the whole generation of Sections 4–7 on `spec`: network, blocks and analysis
 /// (analysis::buildHydrology), then river and terrain primitives ("primitives"), quantised to
